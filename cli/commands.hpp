@@ -1,0 +1,11 @@
+#pragma once
+// Subcommands of the foldkit CLI: one file each (setup_* binds options, the callback does the work).
+#include <CLI/CLI.hpp>
+
+namespace foldkit::cli {
+
+void setup_make(CLI::App& app);
+void setup_unfold(CLI::App& app);
+void setup_inspect(CLI::App& app);
+
+}  // namespace foldkit::cli

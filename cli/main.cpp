@@ -1,0 +1,33 @@
+// foldkit: mesh -> unfolding -> layout -> PDF/SVG/PNG or a cutting plotter.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "foldkit/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"foldkit: turn a 3D triangle mesh into a papercraft sheet to print, cut, fold and glue"};
+  app.set_version_flag("--version", FOLDKIT_VERSION);
+  app.require_subcommand(1);
+  foldkit::cli::setup_make(app);
+  foldkit::cli::setup_unfold(app);
+  foldkit::cli::setup_inspect(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : static_cast<int>(foldkit::ExitCode::Usage);
+  } catch (const foldkit::Error& e) {
+    std::cerr << "foldkit: " << e.what() << "\n";
+    return static_cast<int>(e.exit_code());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "foldkit: out of memory\n";
+    return static_cast<int>(foldkit::ExitCode::Failure);
+  } catch (const std::exception& e) {
+    std::cerr << "foldkit: internal error: " << e.what() << "\n";
+    return static_cast<int>(foldkit::ExitCode::Failure);
+  }
+  return 0;
+}

@@ -1,0 +1,55 @@
+#pragma once
+// A laid-out sheet: the contract between layout/ and devices/. Geometry carries roles, never colours
+// or tools; renderers and device profiles map roles to styles and tools.
+#include <string>
+#include <vector>
+
+#include "foldkit/geom/vec.hpp"
+
+namespace foldkit {
+
+enum class PathRole { Cut, Mountain, Valley, Tab, Label, Hint, RegMark };
+
+/// Lower-case name of a role ("cut", "mountain", …): SVG group ids, profile keys, JSON.
+inline const char* role_name(PathRole r) {
+  switch (r) {
+    case PathRole::Cut: return "cut";
+    case PathRole::Mountain: return "mountain";
+    case PathRole::Valley: return "valley";
+    case PathRole::Tab: return "tab";
+    case PathRole::Label: return "label";
+    case PathRole::Hint: return "hint";
+    case PathRole::RegMark: return "regmark";
+  }
+  return "?";
+}
+
+/// A polyline on the sheet, millimetres from the sheet's top-left corner, y pointing down.
+struct Path {
+  PathRole role = PathRole::Cut;
+  std::vector<Vec2> points_mm;
+  bool closed = false;
+  int piece = -1;      ///< piece index, -1 when the path belongs to no piece (marks, hints)
+  bool filled = false; ///< drawn filled (registration square); cutters ignore fills
+};
+
+/// A text on the sheet. `at_mm` is the left end of the baseline; the text runs along `angle_rad`
+/// (0 = left to right, positive = clockwise on the page since y points down).
+struct Text {
+  std::string text;
+  Vec2 at_mm;
+  double height_mm = 3;
+  double angle_rad = 0;
+  PathRole role = PathRole::Label;
+  int piece = -1;
+};
+
+/// One sheet of paper with everything to print, draw, score and cut on it.
+struct Sheet {
+  Vec2 size_mm;       ///< width, height of the paper
+  Box2 printable_mm;  ///< area inside the margins; everything but registration marks lies inside it
+  std::vector<Path> paths;
+  std::vector<Text> texts;
+};
+
+}  // namespace foldkit

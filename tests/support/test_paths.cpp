@@ -1,0 +1,48 @@
+#include "test_paths.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <random>
+#include <unistd.h>
+
+namespace foldkit::test {
+namespace fs = std::filesystem;
+
+fs::path source_dir() { return fs::path(FOLDKIT_SOURCE_DIR); }
+
+fs::path example_mesh(const std::string& name) { return source_dir() / "examples" / name; }
+
+std::optional<fs::path> shared_meshes() {
+  fs::path p = fs::path(FOLDKIT_SHARED_DIR) / "meshes";
+  if (fs::is_directory(p)) return p;
+  return std::nullopt;
+}
+
+std::vector<fs::path> corpus_meshes(int max_faces) {
+  std::vector<fs::path> out;
+  auto dir = shared_meshes();
+  if (!dir) return out;
+  for (const auto& entry : fs::directory_iterator(*dir)) {
+    if (entry.path().extension() != ".obj") continue;
+    std::string stem = entry.path().stem().string();
+    auto us = stem.rfind('_');
+    if (us == std::string::npos) continue;
+    int faces = std::atoi(stem.c_str() + us + 1);
+    if (faces > 0 && faces <= max_faces) out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+fs::path foldkit_binary() { return fs::path(FOLDKIT_BINARY); }
+
+fs::path temp_dir(const std::string& tag) {
+  static std::atomic<int> counter{0};
+  fs::path p = fs::temp_directory_path() /
+               ("foldkit-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+}  // namespace foldkit::test

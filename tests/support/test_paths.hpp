@@ -1,0 +1,23 @@
+#pragma once
+// Where tests find their inputs: the project's own examples and, when present, the shared corpus.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace foldkit::test {
+
+/// Root of the source tree (examples/, profiles/, tests/data/).
+std::filesystem::path source_dir();
+/// The project's bundled example mesh `name` (e.g. "spot_350.obj") under examples/.
+std::filesystem::path example_mesh(const std::string& name);
+/// ../shared/meshes when the corpus is present, else nullopt (tests then GTEST_SKIP with a message).
+std::optional<std::filesystem::path> shared_meshes();
+/// Corpus meshes (sorted by name) with at most `max_faces` faces, read from the file names; empty without corpus.
+std::vector<std::filesystem::path> corpus_meshes(int max_faces);
+/// The built foldkit executable, for end-to-end tests of the CLI.
+std::filesystem::path foldkit_binary();
+/// A fresh empty directory under the system temp dir, unique per call.
+std::filesystem::path temp_dir(const std::string& tag);
+
+}  // namespace foldkit::test

@@ -1,0 +1,58 @@
+#pragma once
+// Geometric predicates shared by unfolding, layout and devices. Header-only.
+//
+// Flat triangles come from rigid motions of 3D faces, so coordinates carry rounding noise of about
+// 1e-12 of the model size. The predicates take a tolerance `eps` (a length) so that triangles that
+// touch along a shared edge or vertex are never reported as overlapping, while a real crossing
+// deeper than eps always is.
+#include <array>
+
+#include "foldkit/geom/vec.hpp"
+
+namespace foldkit {
+
+using Triangle2 = std::array<Vec2, 3>;
+
+/// Twice the signed area of abc: positive when counter-clockwise.
+constexpr double orient2d(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
+
+/// Signed area of a triangle (positive when counter-clockwise).
+constexpr double signed_area(const Triangle2& t) { return 0.5 * orient2d(t[0], t[1], t[2]); }
+
+inline Box2 bounds(const Triangle2& t) {
+  Box2 b;
+  for (Vec2 p : t) b.add(p);
+  return b;
+}
+
+/// True when the interiors of two counter-clockwise triangles overlap by more than `eps` (a length):
+/// separating-axis test over the six edge normals, each shrunk by eps. Shared edges, shared vertices
+/// and mere touching are not overlaps.
+inline bool triangles_overlap(const Triangle2& a, const Triangle2& b, double eps) {
+  // q is separated from p when, for some edge of p, every corner of q lies outside that edge's line or
+  // within eps inside it. cross(e, v - p_i) / |e| is the signed distance of v to the inside of the edge.
+  auto separated_by_edges_of = [eps](const Triangle2& p, const Triangle2& q) {
+    for (int i = 0; i < 3; ++i) {
+      Vec2 e = p[(i + 1) % 3] - p[i];
+      double len = norm(e);
+      if (len == 0) continue;
+      double deepest = -1e300;
+      for (Vec2 v : q) deepest = std::fmax(deepest, cross(e, v - p[i]) / len);
+      if (deepest <= eps) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
+}
+
+/// True when segments pq and rs cross at a point interior to both (proper crossing, beyond eps).
+inline bool segments_cross(Vec2 p, Vec2 q, Vec2 r, Vec2 s, double eps) {
+  double lpq = norm(q - p), lrs = norm(s - r);
+  if (lpq == 0 || lrs == 0) return false;
+  double d1 = orient2d(p, q, r) / lpq, d2 = orient2d(p, q, s) / lpq;
+  double d3 = orient2d(r, s, p) / lrs, d4 = orient2d(r, s, q) / lrs;
+  return ((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) &&
+         ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps));
+}
+
+}  // namespace foldkit

@@ -1,0 +1,59 @@
+#pragma once
+// The triangle mesh every stage works on: a value type with its own edge connectivity, so that no
+// OpenMesh type escapes unfold/.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "foldkit/geom/vec.hpp"
+
+namespace foldkit::unfold {
+
+/// An undirected mesh edge between vertices v[0] < v[1]. face[0] traverses it v[0]->v[1] or v[1]->v[0]
+/// as `corner[0]` says; face[1] is -1 on a boundary edge (an open mesh's border is already cut).
+struct MeshEdge {
+  std::array<int, 2> v{-1, -1};
+  std::array<int, 2> face{-1, -1};
+  /// corner[k]: index i in 0..2 such that the edge is faces[face[k]][i] -> faces[face[k]][(i+1)%3].
+  std::array<int, 2> corner{-1, -1};
+  bool boundary() const { return face[1] < 0; }
+};
+
+/// A consistently oriented, edge- and vertex-manifold triangle mesh (validated by `make_mesh`).
+struct Mesh {
+  std::vector<Vec3> vertices;
+  /// Counter-clockwise seen from outside for closed meshes.
+  std::vector<std::array<int, 3>> faces;
+  std::vector<MeshEdge> edges;
+  /// face_edges[f][i] is the edge faces[f][i] -> faces[f][(i+1)%3].
+  std::vector<std::array<int, 3>> face_edges;
+  /// Where the mesh came from (file name), for messages.
+  std::string name;
+
+  int num_faces() const { return static_cast<int>(faces.size()); }
+  int num_vertices() const { return static_cast<int>(vertices.size()); }
+  int num_edges() const { return static_cast<int>(edges.size()); }
+  /// Corner positions of face f.
+  std::array<Vec3, 3> corners(int f) const {
+    return {vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]]};
+  }
+};
+
+/// Builds edges and face_edges from vertices and faces and checks the mesh: indices in range,
+/// finite coordinates, every edge in at most two faces traversed in opposite directions, every
+/// vertex a single fan. Throws InputError(name, problem) otherwise.
+Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces, std::string name);
+
+/// Length of edge e in model units.
+double edge_length(const Mesh& mesh, int e);
+/// Unit normal of face f.
+Vec3 face_normal(const Mesh& mesh, int f);
+/// Area of face f.
+double face_area(const Mesh& mesh, int f);
+
+/// Signed dihedral (fold) angle of edge e in radians, in (-pi, pi): 0 for coplanar faces, positive
+/// where the surface is convex (a mountain fold seen from the printed outside), negative where
+/// concave (a valley fold). 0 for boundary edges.
+double fold_angle(const Mesh& mesh, int e);
+
+}  // namespace foldkit::unfold
