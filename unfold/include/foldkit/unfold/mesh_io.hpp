@@ -1,5 +1,6 @@
 #pragma once
 // Reading meshes from OBJ, OFF, STL (ASCII and binary) and PLY files.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -13,6 +14,12 @@ struct LoadOptions {
   /// Decimate with OpenMesh's quadric decimater to at most this many faces first (the seed's
   /// preprocessing). nullopt: keep every face.
   std::optional<int> max_faces;
+  /// Files larger than this are refused before reading: no paper model needs a gigabyte of mesh, and a
+  /// hostile file should not exhaust memory.
+  std::uintmax_t max_file_bytes = std::uintmax_t{1} << 30;
+  /// Meshes with more (triangulated) faces are refused before any repair work: far beyond anything that
+  /// can be folded, and the unfolders' cost grows faster than linearly. Decimate offline first.
+  int face_limit = 2'000'000;
 };
 
 /// A loaded mesh plus what the loader changed or noticed, for the user to read.
@@ -26,7 +33,7 @@ struct LoadedMesh {
 
 /// Reads and validates a mesh file. Throws InputError naming the file and the problem (missing,
 /// empty, truncated, unparsable, non-finite coordinates, non-manifold, non-orientable, zero-area
-/// faces that cannot be collapsed safely, unsupported extension).
+/// faces that cannot be collapsed safely, unsupported extension, over the size limits).
 LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
 
 }  // namespace foldkit::unfold

@@ -1,0 +1,351 @@
+// load_mesh: check the facts a reader might trust blindly (size, header counts, numbers), let OpenMesh's
+// readers parse into a polygon soup through our own importer (so that our validation, not OpenMesh's
+// TriMesh, decides what is wrong), then repair and validate the soup (mesh_io_soup.cpp).
+#include "foldkit/unfold/mesh_io.hpp"
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "foldkit/error.hpp"
+#include "foldkit/unfold/decimate.hpp"
+#include "mesh_io_soup.hpp"
+
+namespace foldkit::unfold {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::PolygonSoup;
+
+/// Collects what an OpenMesh reader finds, unchanged; everything else a reader may call is ignored.
+class SoupImporter final : public OpenMesh::IO::BaseImporter {
+ public:
+  explicit SoupImporter(PolygonSoup& soup) : soup_(soup) {}
+
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override { return add({p[0], p[1], p[2]}); }
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override { return add({p[0], p[1], p[2]}); }
+  OpenMesh::VertexHandle add_vertex() override { return add({}); }
+  OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle, OpenMesh::VertexHandle) override {
+    return OpenMesh::HalfedgeHandle();
+  }
+  OpenMesh::FaceHandle add_face(const VHandles& indices) override {
+    std::vector<int> poly;
+    poly.reserve(indices.size());
+    for (const auto& vh : indices)
+      poly.push_back(vh.idx());
+    soup_.polygons.push_back(std::move(poly));
+    return OpenMesh::FaceHandle(static_cast<int>(soup_.polygons.size()) - 1);
+  }
+  OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return OpenMesh::FaceHandle(); }
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>&) override {}
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec3f>&) override {}
+  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+  void set_point(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& p) override {
+    if (vh.idx() >= 0 && vh.idx() < static_cast<int>(soup_.vertices.size()))
+      soup_.vertices[vh.idx()] = {p[0], p[1], p[2]};
+  }
+  void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
+  void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
+  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f&) override {}
+  void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f&) override {}
+  void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
+  void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
+  void request_face_texcoords2D() override {}
+  void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f&) override {}
+  void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
+  void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
+  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void add_texture_information(int, std::string) override {}
+  // Header counts are not trusted for allocation: a hostile header could ask for terabytes.
+  void reserve(unsigned int, unsigned int, unsigned int) override {}
+  size_t n_vertices() const override { return soup_.vertices.size(); }
+  size_t n_faces() const override { return soup_.polygons.size(); }
+  size_t n_edges() const override { return 0; }
+
+ private:
+  OpenMesh::VertexHandle add(Vec3 p) {
+    soup_.vertices.push_back(p);
+    return OpenMesh::VertexHandle(static_cast<int>(soup_.vertices.size()) - 1);
+  }
+  PolygonSoup& soup_;
+};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string read_all(const fs::path& path, const std::string& name) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name, "cannot open the file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// OpenMesh's OBJ reader parses numbers with iostreams, which reject "nan" and "inf" and silently keep
+// going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
+// user can get wrong are checked here first, line by line, with file line numbers in the messages.
+void check_obj_text(const std::string& text, const std::string& name) {
+  std::size_t line_no = 0, pos = 0;
+  int vertices = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    const bool last_line_unterminated = end == std::string::npos;
+    if (last_line_unterminated) end = text.size();
+    ++line_no;
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (line.size() < 2) continue;
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    const std::string where = " (line " + std::to_string(line_no) + ")";
+    if (tag == "v") {
+      ++vertices;
+      std::string tok;
+      for (int k = 0; k < 3; ++k) {
+        if (!(ls >> tok))
+          throw InputError(name, "vertex " + std::to_string(vertices) + " has fewer than 3 coordinates" +
+                                     (last_line_unterminated ? " (truncated file?)" : "") + where);
+        char* stop = nullptr;
+        const double x = std::strtod(tok.c_str(), &stop);
+        if (stop == tok.c_str() || *stop != '\0')
+          throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "'" + where);
+        if (!std::isfinite(x))
+          throw InputError(name,
+                           "vertex " + std::to_string(vertices) + " has a non-finite coordinate" + where);
+      }
+    } else if (tag == "f") {
+      int corners = 0;
+      std::string tok;
+      while (ls >> tok) {
+        char* stop = nullptr;
+        const long idx = std::strtol(tok.c_str(), &stop, 10);
+        if (stop == tok.c_str() || (*stop != '\0' && *stop != '/'))
+          throw InputError(name, "unparsable face corner '" + tok.substr(0, 32) + "'" + where);
+        const long resolved = idx < 0 ? vertices + idx + 1 : idx;
+        if (resolved < 1 || resolved > vertices)
+          throw InputError(name, "face references vertex " + std::to_string(idx) + " (only " +
+                                     std::to_string(vertices) + " vertices so far)" + where);
+        ++corners;
+      }
+      if (corners < 3)
+        throw InputError(name, std::string(last_line_unterminated ? "truncated file: " : "") +
+                                   "face with only " + std::to_string(corners) + " corners" + where);
+    }
+  }
+}
+
+// A binary STL is an 80-byte header, a 32-bit triangle count and 50 bytes per triangle: the size must
+// agree with the count, or the reader would run past the end or silently drop triangles.
+bool check_stl(const std::string& bytes, const std::string& name) {
+  std::size_t first = bytes.find_first_not_of(" \t\r\n");
+  const bool says_solid = first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
+  if (bytes.size() >= 84) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);  // little-endian on every platform we build for
+    const std::uint64_t expected = 84 + 50 * static_cast<std::uint64_t>(count);
+    if (expected == bytes.size()) return true;
+    const bool looks_ascii =
+        says_solid && bytes.find("facet") != std::string::npos &&
+        std::all_of(
+            bytes.begin(), bytes.begin() + std::min<std::size_t>(bytes.size(), 4096),
+            [](unsigned char c) { return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127); });
+    if (!looks_ascii)
+      throw InputError(name, "binary STL header says " + std::to_string(count) + " triangles (" +
+                                 std::to_string(expected) + " bytes) but the file has " +
+                                 std::to_string(bytes.size()) + " bytes");
+    return false;
+  }
+  if (!says_solid) throw InputError(name, "too short for a binary STL and not an ASCII STL");
+  return false;
+}
+
+void check_ascii_stl_text(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::string tok;
+  std::size_t facets = 0, endfacets = 0, vertices = 0;
+  while (in >> tok) {
+    if (tok == "facet")
+      ++facets;
+    else if (tok == "endfacet")
+      ++endfacets;
+    else if (tok == "vertex") {
+      ++vertices;
+      for (int k = 0; k < 3; ++k) {
+        if (!(in >> tok))
+          throw InputError(name, "truncated ASCII STL (vertex " + std::to_string(vertices) + ")");
+        char* stop = nullptr;
+        const double x = std::strtod(tok.c_str(), &stop);
+        if (stop == tok.c_str() || *stop != '\0')
+          throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "' in ASCII STL");
+        if (!std::isfinite(x))
+          throw InputError(name, "vertex " + std::to_string(vertices) + " has a non-finite coordinate");
+      }
+    }
+  }
+  if (facets != endfacets || vertices != 3 * facets)
+    throw InputError(name, "truncated or malformed ASCII STL (" + std::to_string(facets) + " facets, " +
+                               std::to_string(endfacets) + " closed, " + std::to_string(vertices) +
+                               " vertices)");
+  if (facets == 0) throw InputError(name, "no faces in the file");
+}
+
+// OFF and PLY headers announce counts; a file too short to hold them is truncated, and a reader would
+// otherwise loop on a failing stream.
+void check_declared_counts(std::uint64_t vertices, std::uint64_t faces, std::uint64_t min_bytes_per_vertex,
+                           std::uint64_t min_bytes_per_face, std::size_t file_bytes,
+                           const std::string& name) {
+  const std::uint64_t needed = vertices * min_bytes_per_vertex + faces * min_bytes_per_face;
+  if (vertices > (std::uint64_t{1} << 40) || faces > (std::uint64_t{1} << 40) || needed > file_bytes)
+    throw InputError(name, "truncated file: the header declares " + std::to_string(vertices) +
+                               " vertices and " + std::to_string(faces) + " faces, more than its " +
+                               std::to_string(file_bytes) + " bytes can hold");
+}
+
+void check_off_header(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::string magic;
+  in >> magic;
+  if (magic.find("OFF") == std::string::npos) throw InputError(name, "not an OFF file (no OFF header)");
+  if (magic.find("n") != std::string::npos || magic.find("4") != std::string::npos)
+    throw InputError(name, "unsupported OFF variant '" + magic + "'");
+  std::string line;
+  long long nv = -1, nf = -1;
+  while (std::getline(in, line)) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::istringstream ls(line);
+    if (ls >> nv >> nf) break;
+    nv = nf = -1;
+  }
+  if (nv < 0 || nf < 0) throw InputError(name, "unparsable OFF header (no vertex and face counts)");
+  const bool binary = magic.find("BINARY") != std::string::npos;
+  check_declared_counts(static_cast<std::uint64_t>(nv), static_cast<std::uint64_t>(nf), binary ? 12 : 6,
+                        binary ? 16 : 8, text.size(), name);
+}
+
+void check_ply_header(const std::string& text, const std::string& name) {
+  if (text.compare(0, 3, "ply") != 0) throw InputError(name, "not a PLY file (no 'ply' magic)");
+  const auto end = text.find("end_header");
+  if (end == std::string::npos) throw InputError(name, "truncated PLY header (no end_header)");
+  std::istringstream in(text.substr(0, end));
+  std::string line;
+  std::uint64_t nv = 0, nf = 0;
+  bool ascii = false;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string word, kind;
+    ls >> word;
+    if (word == "format") {
+      ls >> kind;
+      ascii = kind == "ascii";
+    } else if (word == "element") {
+      long long count = -1;
+      ls >> kind >> count;
+      if (count < 0) throw InputError(name, "unparsable PLY element line '" + line.substr(0, 60) + "'");
+      if (kind == "vertex") nv = static_cast<std::uint64_t>(count);
+      if (kind == "face") nf = static_cast<std::uint64_t>(count);
+    }
+  }
+  check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
+}
+
+void silence_openmesh() {
+  // OpenMesh reports problems on its global log streams; a library must not print, and our own
+  // validation reports every problem that matters.
+  omerr().disable();
+  omlog().disable();
+  omout().disable();
+}
+
+}  // namespace
+
+LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
+  const std::string name = path.string();
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw InputError(name, "no such file");
+  if (!fs::is_regular_file(status)) throw InputError(name, "not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw InputError(name, "cannot read the file size");
+  if (size == 0) throw InputError(name, "empty file");
+  if (size > options.max_file_bytes)
+    throw InputError(name, "file is " + std::to_string(size) + " bytes, over the limit of " +
+                               std::to_string(options.max_file_bytes) + " bytes");
+  const std::string ext = lower(path.extension().string());
+  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply")
+    throw InputError(name, "unsupported file type '" + ext + "' (expected .obj, .off, .stl or .ply)");
+
+  const std::string bytes = read_all(path, name);
+  if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(name, "empty file (only whitespace)");
+  detail::RepairOptions repair;
+  if (ext == ".obj") {
+    check_obj_text(bytes, name);
+  } else if (ext == ".stl") {
+    if (!check_stl(bytes, name)) check_ascii_stl_text(bytes, name);
+    repair.weld_all = true;
+  } else if (ext == ".off") {
+    check_off_header(bytes, name);
+  } else {
+    check_ply_header(bytes, name);
+  }
+
+  silence_openmesh();
+  PolygonSoup soup;
+  SoupImporter importer(soup);
+  OpenMesh::IO::Options read_options;
+  if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
+    throw InputError(name, "unparsable " + ext.substr(1) + " file");
+  if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
+
+  std::uint64_t triangles = 0;
+  for (const auto& poly : soup.polygons)
+    triangles += poly.size() >= 3 ? poly.size() - 2 : 1;
+  if (triangles > static_cast<std::uint64_t>(options.face_limit))
+    throw InputError(name, std::to_string(triangles) + " triangles, over the limit of " +
+                               std::to_string(options.face_limit) + " (decimate the mesh first)");
+
+  LoadedMesh out;
+  out.original_faces = static_cast<int>(soup.polygons.size());
+  out.mesh = detail::repair_soup(std::move(soup), name, repair, out.notes);
+  if (options.max_faces && out.mesh.num_faces() > *options.max_faces) {
+    const int before = out.mesh.num_faces();
+    out.mesh = decimate(out.mesh, *options.max_faces);
+    out.notes.push_back("decimated from " + std::to_string(before) + " to " +
+                        std::to_string(out.mesh.num_faces()) + " faces (quadric error)");
+  }
+  return out;
+}
+
+}  // namespace foldkit::unfold

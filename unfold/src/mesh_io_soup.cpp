@@ -1,0 +1,406 @@
+// Repairs run in an order where each step can rely on the previous one: indices valid, then welded,
+// then triangulated, then edge-manifold, then consistently oriented (flips need orientation), then
+// zero-area faces removed (collapses need manifold edges), then pinched vertices split, then closed
+// components turned outward. make_mesh re-checks everything at the end.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include "foldkit/error.hpp"
+#include "mesh_io_soup.hpp"
+
+namespace foldkit::unfold::detail {
+namespace {
+
+using Tri = std::array<int, 3>;
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+int find_root(std::vector<int>& parent, int x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+std::string plural(std::size_t n, const std::string& word) {
+  if (n == 1) return "1 " + word;
+  if (word.ends_with("vertex")) return std::to_string(n) + " " + word.substr(0, word.size() - 2) + "ices";
+  return std::to_string(n) + " " + word + "s";
+}
+
+/// (face, corner) pairs of the faces using each undirected edge.
+using EdgeFaces = std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>>;
+
+EdgeFaces edge_faces(const std::vector<Tri>& tris) {
+  EdgeFaces map;
+  map.reserve(tris.size() * 2);
+  for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+    for (int i = 0; i < 3; ++i)
+      map[edge_key(tris[f][i], tris[f][(i + 1) % 3])].push_back({f, i});
+  return map;
+}
+
+// Twice the area over the squared longest edge (the height over the length) below which a triangle counts
+// as zero-area: a 0.01 mm bump on a 1 m edge, below anything paper can show, yet above the rounding of
+// a midpoint printed with 6 significant digits (tricky/degenerate.obj has one at 4.5e-6).
+constexpr double kZeroAreaRelative = 1e-5;
+// Edges shorter than this fraction of the longest edge of their face join coincident vertices.
+constexpr double kCoincidentRelative = 1e-6;
+
+bool is_zero_area(const std::vector<Vec3>& p, const Tri& t) {
+  const Vec3 a = p[t[0]], b = p[t[1]], c = p[t[2]];
+  const double l2 = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+  return norm(cross(b - a, c - a)) <= kZeroAreaRelative * l2 || l2 == 0.0;
+}
+
+std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::string>& notes) {
+  std::vector<Tri> tris;
+  tris.reserve(soup.polygons.size());
+  std::size_t quads = 0, ngons = 0;
+  std::vector<Vec3> pts;
+  for (const auto& poly : soup.polygons) {
+    if (poly.size() == 3) {
+      tris.push_back({poly[0], poly[1], poly[2]});
+      continue;
+    }
+    (poly.size() == 4 ? quads : ngons)++;
+    pts.clear();
+    for (int v : poly)
+      pts.push_back(soup.vertices[v]);
+    for (const Tri& t : triangulate_polygon(pts))
+      tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
+  }
+  if (quads + ngons > 0)
+    notes.push_back("triangulated " + plural(quads, "quad") + " and " + plural(ngons, "n-gon"));
+  return tris;
+}
+
+void check_edge_manifold(const std::vector<Tri>& tris, const EdgeFaces& map,
+                         const std::vector<int>& file_index, const std::string& name) {
+  for (const auto& [key, uses] : map) {
+    if (uses.size() <= 2) continue;
+    const Tri& t = tris[uses[0].first];
+    const int a = t[uses[0].second], b = t[(uses[0].second + 1) % 3];
+    throw InputError(name, "non-manifold edge between vertices " + std::to_string(file_index[a] + 1) +
+                               " and " + std::to_string(file_index[b] + 1) + " (" +
+                               std::to_string(uses.size()) + " faces share it)");
+  }
+}
+
+// Orients each component consistently by breadth-first search; keeps the majority orientation of the
+// file so that a few flipped faces are what gets fixed.
+std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, const std::string& name) {
+  const int nf = static_cast<int>(tris.size());
+  std::vector<int> component(nf, -1);
+  std::vector<char> flipped(nf, 0);
+  std::vector<int> queue;
+  std::size_t total_flips = 0;
+  for (int seed = 0; seed < nf; ++seed) {
+    if (component[seed] >= 0) continue;
+    queue.assign(1, seed);
+    component[seed] = seed;
+    std::vector<int> members;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const int f = queue[q];
+      members.push_back(f);
+      for (int i = 0; i < 3; ++i) {
+        const int a = tris[f][i], b = tris[f][(i + 1) % 3];
+        for (auto [g, j] : map.at(edge_key(a, b))) {
+          if (g == f) continue;
+          // j indexes g as the file had it; g may have been flipped since, so look at it as it is now.
+          (void)j;
+          const auto& tg = tris[g];
+          const bool same_direction =
+              (tg[0] == a && tg[1] == b) || (tg[1] == a && tg[2] == b) || (tg[2] == a && tg[0] == b);
+          if (component[g] < 0) {
+            component[g] = seed;
+            if (same_direction) {
+              std::swap(tris[g][1], tris[g][2]);
+              flipped[g] = 1;
+            }
+            queue.push_back(g);
+          } else if (same_direction) {
+            throw InputError(name,
+                             "non-orientable surface (like a Moebius strip): its faces cannot be "
+                             "oriented consistently");
+          }
+        }
+      }
+    }
+    const auto flips = static_cast<std::size_t>(
+        std::count_if(members.begin(), members.end(), [&](int f) { return flipped[f]; }));
+    if (2 * flips > members.size()) {
+      for (int f : members)
+        std::swap(tris[f][1], tris[f][2]);
+      total_flips += members.size() - flips;
+    } else {
+      total_flips += flips;
+    }
+  }
+  return total_flips;
+}
+
+// Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
+// collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
+// opposite edge is removed by flipping that edge with the neighbour across it.
+std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, const std::string& name) {
+  std::size_t fixed = 0;
+  for (int pass = 0; pass < 32; ++pass) {
+    std::vector<int> degenerate;
+    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+      if (is_zero_area(points, tris[f])) degenerate.push_back(f);
+    if (degenerate.empty()) return fixed;
+    const EdgeFaces map = edge_faces(tris);
+    std::vector<std::vector<int>> vertex_faces(points.size());
+    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+      for (int v : tris[f])
+        vertex_faces[v].push_back(f);
+    std::vector<char> touched(tris.size(), 0), removed(tris.size(), 0);
+    std::size_t progress = 0;
+    for (int f : degenerate) {
+      if (touched[f]) continue;
+      const Tri t = tris[f];
+      double len2[3];
+      for (int i = 0; i < 3; ++i) {
+        const Vec3 d = points[t[(i + 1) % 3]] - points[t[i]];
+        len2[i] = dot(d, d);
+      }
+      const int shortest = static_cast<int>(std::min_element(len2, len2 + 3) - len2);
+      const int longest = static_cast<int>(std::max_element(len2, len2 + 3) - len2);
+      if (len2[shortest] <= kCoincidentRelative * kCoincidentRelative * len2[longest] ||
+          len2[longest] == 0.0) {
+        const int u = t[shortest], w = t[(shortest + 1) % 3];
+        const auto& uses = map.at(edge_key(u, w));
+        bool ok = true;
+        for (auto [g, j] : uses)
+          ok = ok && !touched[g];
+        std::vector<int> opposite;
+        for (auto [g, j] : uses)
+          opposite.push_back(tris[g][(j + 2) % 3]);
+        std::vector<int> nu, nw;
+        for (int g : vertex_faces[u]) {
+          ok = ok && !touched[g];
+          for (int v : tris[g])
+            nu.push_back(v);
+        }
+        for (int g : vertex_faces[w]) {
+          ok = ok && !touched[g];
+          for (int v : tris[g])
+            nw.push_back(v);
+        }
+        if (!ok) continue;
+        std::sort(nu.begin(), nu.end());
+        nu.erase(std::unique(nu.begin(), nu.end()), nu.end());
+        std::sort(nw.begin(), nw.end());
+        nw.erase(std::unique(nw.begin(), nw.end()), nw.end());
+        std::vector<int> common;
+        std::set_intersection(nu.begin(), nu.end(), nw.begin(), nw.end(), std::back_inserter(common));
+        std::erase_if(common, [&](int v) { return v == u || v == w; });
+        std::sort(opposite.begin(), opposite.end());
+        if (common != opposite) continue;  // collapsing would glue the surface to itself
+        for (auto [g, j] : uses)
+          removed[g] = 1;
+        progress += uses.size();
+        for (int g : vertex_faces[w]) {
+          touched[g] = 1;
+          for (int& v : tris[g])
+            if (v == w) v = u;
+        }
+        for (int g : vertex_faces[u])
+          touched[g] = 1;
+        continue;
+      }
+      // A cap: corner p lies on the longest edge q->r.
+      const int q = t[longest], r = t[(longest + 1) % 3], p = t[(longest + 2) % 3];
+      const auto& uses = map.at(edge_key(q, r));
+      if (uses.size() == 1) {
+        removed[f] = touched[f] = 1;  // a cap on the border covers nothing: drop it
+        ++progress;
+        continue;
+      }
+      const auto [g, j] = uses[0].first == f ? uses[1] : uses[0];
+      if (touched[g]) continue;
+      const int w = tris[g][(j + 2) % 3];
+      if (w == p || map.count(edge_key(p, w))) continue;
+      tris[f] = {p, q, w};
+      tris[g] = {p, w, r};
+      touched[f] = touched[g] = 1;
+      ++progress;  // the flipped-in pair covers what the neighbour covered: the cap is gone
+    }
+    std::vector<Tri> kept;
+    kept.reserve(tris.size());
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (!removed[f]) kept.push_back(tris[f]);
+    tris = std::move(kept);
+    fixed += progress;
+    if (progress == 0) break;
+  }
+  for (const Tri& t : tris)
+    if (is_zero_area(points, t))
+      throw InputError(name, "zero-area face (vertices " + std::to_string(t[0] + 1) + ", " +
+                                 std::to_string(t[1] + 1) + ", " + std::to_string(t[2] + 1) +
+                                 ") cannot be collapsed without tearing the surface");
+  return fixed;
+}
+
+// A vertex whose faces form several fans (two surfaces touching at a point) gets one copy per fan.
+std::size_t split_pinched_vertices(std::vector<Vec3>& points, std::vector<int>& file_index,
+                                   std::vector<Tri>& tris) {
+  const int nf = static_cast<int>(tris.size());
+  std::vector<int> parent(static_cast<std::size_t>(nf) * 3);
+  std::iota(parent.begin(), parent.end(), 0);
+  const EdgeFaces map = edge_faces(tris);
+  for (const auto& [key, uses] : map) {
+    if (uses.size() != 2) continue;
+    const auto [f, i] = uses[0];
+    const auto [g, j] = uses[1];
+    // f traverses a->b, g traverses b->a: corner i of f joins corner j+1 of g, and the other end too.
+    parent[find_root(parent, 3 * f + i)] = find_root(parent, 3 * g + (j + 1) % 3);
+    parent[find_root(parent, 3 * f + (i + 1) % 3)] = find_root(parent, 3 * g + j);
+  }
+  std::vector<int> first_root(points.size(), -1);
+  std::map<int, int> copy_of_root;
+  std::vector<char> split(points.size(), 0);
+  for (int c = 0; c < 3 * nf; ++c) {
+    int& v = tris[c / 3][c % 3];
+    const int r = find_root(parent, c);
+    if (first_root[v] < 0) first_root[v] = r;
+    if (first_root[v] == r) continue;
+    auto [it, inserted] = copy_of_root.try_emplace(r, static_cast<int>(points.size()));
+    if (inserted) {
+      points.push_back(points[v]);
+      file_index.push_back(file_index[v]);
+      split[v] = 1;
+    }
+    v = it->second;
+  }
+  return static_cast<std::size_t>(std::count(split.begin(), split.end(), 1));
+}
+
+}  // namespace
+
+Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
+                 std::vector<std::string>& notes) {
+  const int nv = static_cast<int>(soup.vertices.size());
+  for (int v = 0; v < nv; ++v) {
+    const Vec3 p = soup.vertices[v];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw InputError(name, "vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
+  }
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    const auto& poly = soup.polygons[f];
+    if (poly.size() < 3)
+      throw InputError(name, "face " + std::to_string(f + 1) + " has only " + std::to_string(poly.size()) +
+                                 " vertices (truncated or malformed file)");
+    for (int v : poly)
+      if (v < 0 || v >= nv)
+        throw InputError(name, "face " + std::to_string(f + 1) + " references vertex " +
+                                   std::to_string(v + 1) + " (only " + std::to_string(nv) + " vertices)");
+  }
+  if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
+
+  std::vector<int> file_index(nv);
+  std::iota(file_index.begin(), file_index.end(), 0);
+  if (options.weld_all) {
+    std::map<std::array<double, 3>, int> first;
+    std::vector<int> remap(nv);
+    std::size_t welded = 0;
+    for (int v = 0; v < nv; ++v) {
+      const Vec3 p = soup.vertices[v];
+      auto [it, inserted] = first.try_emplace({p.x, p.y, p.z}, v);
+      remap[v] = it->second;
+      if (!inserted) ++welded;
+    }
+    for (auto& poly : soup.polygons)
+      for (int& v : poly)
+        v = remap[v];
+    if (welded > 0) notes.push_back("welded " + plural(welded, "coincident vertex"));
+  }
+
+  std::size_t dropped = 0;
+  for (auto& poly : soup.polygons) {
+    std::vector<int> clean;
+    for (int v : poly)
+      if (std::find(clean.begin(), clean.end(), v) == clean.end()) clean.push_back(v);
+    if (clean.size() < 3) ++dropped;
+    poly = std::move(clean);
+  }
+  if (dropped > 0) {
+    std::erase_if(soup.polygons, [](const auto& p) { return p.size() < 3; });
+    notes.push_back("dropped " + plural(dropped, "face") + " with repeated corners");
+    if (soup.polygons.empty()) throw InputError(name, "every face has repeated corners");
+  }
+
+  {
+    std::vector<char> used(nv, 0);
+    for (const auto& poly : soup.polygons)
+      for (int v : poly)
+        used[v] = 1;
+    const auto unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+    if (unused > 0 && !options.weld_all)
+      notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
+  }
+  std::vector<Tri> tris = triangulate_all(soup, notes);
+  std::vector<Vec3> points = std::move(soup.vertices);
+
+  EdgeFaces map = edge_faces(tris);
+  check_edge_manifold(tris, map, file_index, name);
+  if (const std::size_t flips = orient_consistently(tris, map, name); flips > 0)
+    notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
+  map.clear();
+
+  if (const std::size_t fixed = remove_zero_area(points, tris, name); fixed > 0)
+    notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
+  if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
+    notes.push_back("split " + plural(split, "non-manifold vertex") + " into one copy per fan of faces");
+
+  // Drop unused vertices so that every vertex of the Mesh is on the surface.
+  std::vector<int> new_index(points.size(), -1);
+  std::vector<Vec3> used;
+  for (Tri& t : tris)
+    for (int& v : t) {
+      if (new_index[v] < 0) {
+        new_index[v] = static_cast<int>(used.size());
+        used.push_back(points[v]);
+      }
+      v = new_index[v];
+    }
+
+  // Closed components are turned so their signed volume is positive (normals outward).
+  const int nf = static_cast<int>(tris.size());
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  map = edge_faces(tris);
+  std::unordered_map<int, bool> closed;
+  for (const auto& [key, uses] : map)
+    if (uses.size() == 2) parent[find_root(parent, uses[0].first)] = find_root(parent, uses[1].first);
+  for (const auto& [key, uses] : map)
+    if (uses.size() == 1) closed[find_root(parent, uses[0].first)] = false;
+  std::unordered_map<int, double> volume;
+  for (int f = 0; f < nf; ++f) {
+    const Vec3 a = used[tris[f][0]], b = used[tris[f][1]], c = used[tris[f][2]];
+    volume[find_root(parent, f)] += dot(a, cross(b, c));
+  }
+  std::size_t turned = 0, components = 0;
+  for (const auto& [root, vol] : volume) {
+    ++components;
+    if (closed.count(root) || vol >= 0) continue;
+    for (int f = 0; f < nf; ++f)
+      if (find_root(parent, f) == root) std::swap(tris[f][1], tris[f][2]);
+    ++turned;
+  }
+  if (turned > 0) notes.push_back("turned " + plural(turned, "closed component") + " outward");
+  if (components > 1)
+    notes.push_back(std::to_string(components) + " connected components: unfolded separately");
+  return make_mesh(std::move(used), std::move(tris), name);
+}
+
+}  // namespace foldkit::unfold::detail
