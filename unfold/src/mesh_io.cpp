@@ -213,7 +213,9 @@ void check_ascii_stl_text(const std::string& text, const std::string& name) {
       }
     }
   }
-  if (facets != endfacets || vertices != 3 * facets)
+  const auto endsolid = text.rfind("endsolid");
+  const bool finished = endsolid != std::string::npos && endsolid > text.rfind("endfacet");
+  if (facets != endfacets || vertices != 3 * facets || !finished)
     throw InputError(name, "truncated or malformed ASCII STL (" + std::to_string(facets) + " facets, " +
                                std::to_string(endfacets) + " closed, " + std::to_string(vertices) +
                                " vertices)");

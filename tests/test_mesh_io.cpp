@@ -1,0 +1,435 @@
+// load_mesh: every format, every failure class (small files written to a temp dir), and every repair.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "foldkit/error.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/mesh_stats.hpp"
+#include "test_paths.hpp"
+
+using namespace foldkit;
+using namespace foldkit::unfold;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<Vec3> kOctaVertices{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const std::vector<std::array<int, 3>> kOctaFaces{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+
+fs::path write(const fs::path& dir, const std::string& name, const std::string& bytes) {
+  fs::path p = dir / name;
+  std::ofstream(p, std::ios::binary) << bytes;
+  return p;
+}
+
+std::string obj(const std::vector<Vec3>& v, const std::vector<std::vector<int>>& f) {
+  std::ostringstream s;
+  s.precision(17);
+  for (const Vec3& p : v)
+    s << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (const auto& poly : f) {
+    s << "f";
+    for (int i : poly)
+      s << " " << i + 1;
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::vector<std::vector<int>> polys(const std::vector<std::array<int, 3>>& tris) {
+  std::vector<std::vector<int>> out;
+  for (const auto& t : tris)
+    out.push_back({t[0], t[1], t[2]});
+  return out;
+}
+
+void put_f32(std::string& s, float x) {
+  char b[4];
+  std::memcpy(b, &x, 4);
+  s.append(b, 4);
+}
+
+std::string binary_stl(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& f,
+                       std::uint32_t declared) {
+  std::string s(80, ' ');
+  char c[4];
+  std::memcpy(c, &declared, 4);
+  s.append(c, 4);
+  for (const auto& t : f) {
+    for (int k = 0; k < 3; ++k)
+      put_f32(s, 0.0f);
+    for (int i : t) {
+      put_f32(s, static_cast<float>(v[i].x));
+      put_f32(s, static_cast<float>(v[i].y));
+      put_f32(s, static_cast<float>(v[i].z));
+    }
+    s.append(2, '\0');
+  }
+  return s;
+}
+
+std::string ascii_stl(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& f) {
+  std::ostringstream s;
+  s << "solid octa\n";
+  for (const auto& t : f) {
+    s << " facet normal 0 0 0\n  outer loop\n";
+    for (int i : t)
+      s << "   vertex " << v[i].x << " " << v[i].y << " " << v[i].z << "\n";
+    s << "  endloop\n endfacet\n";
+  }
+  s << "endsolid octa\n";
+  return s.str();
+}
+
+std::string off(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& f) {
+  std::ostringstream s;
+  s << "OFF\n" << v.size() << " " << f.size() << " 0\n";
+  for (const Vec3& p : v)
+    s << p.x << " " << p.y << " " << p.z << "\n";
+  for (const auto& t : f)
+    s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  return s.str();
+}
+
+std::string ply(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& f) {
+  std::ostringstream s;
+  s << "ply\nformat ascii 1.0\nelement vertex " << v.size()
+    << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << f.size()
+    << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const Vec3& p : v)
+    s << p.x << " " << p.y << " " << p.z << "\n";
+  for (const auto& t : f)
+    s << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  return s.str();
+}
+
+double signed_volume(const Mesh& m) {
+  double v = 0;
+  for (int f = 0; f < m.num_faces(); ++f) {
+    const auto c = m.corners(f);
+    v += dot(c[0], cross(c[1], c[2])) / 6;
+  }
+  return v;
+}
+
+void expect_octahedron(const LoadedMesh& loaded) {
+  EXPECT_EQ(loaded.mesh.num_faces(), 8);
+  EXPECT_EQ(loaded.mesh.num_vertices(), 6);
+  const MeshStats s = compute_mesh_stats(loaded.mesh);
+  EXPECT_TRUE(s.closed);
+  EXPECT_EQ(s.genus, 0);
+  EXPECT_NEAR(signed_volume(loaded.mesh), 4.0 / 3.0, 1e-6);
+}
+
+std::string problem_of(const fs::path& p, const LoadOptions& options = {}) {
+  try {
+    load_mesh(p, options);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), p.string());
+    EXPECT_EQ(e.problem().find('\n'), std::string::npos) << "one line";
+    EXPECT_EQ(e.exit_code(), ExitCode::Input);
+    return e.problem();
+  }
+  ADD_FAILURE() << p << " loaded without error";
+  return {};
+}
+
+// A Moebius strip of n quads: orientable everywhere locally, not globally.
+std::string moebius_obj(int n) {
+  std::vector<Vec3> v;
+  for (int i = 0; i < n; ++i) {
+    const double u = 2 * std::numbers::pi * i / n;
+    for (double w : {-0.5, 0.5})
+      v.push_back({(1 + w * std::cos(u / 2)) * std::cos(u), (1 + w * std::cos(u / 2)) * std::sin(u),
+                   w * std::sin(u / 2)});
+  }
+  std::vector<std::vector<int>> f;
+  for (int i = 0; i + 1 < n; ++i)
+    f.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  f.push_back({2 * (n - 1), 1, 0, 2 * (n - 1) + 1});  // the half twist: a_n = b_0, b_n = a_0
+  return obj(v, f);
+}
+
+class MeshIo : public ::testing::Test {
+ protected:
+  fs::path dir = test::temp_dir("mesh_io");
+  void TearDown() override { fs::remove_all(dir); }
+};
+
+}  // namespace
+
+TEST_F(MeshIo, ReadsAnObjOctahedron) {
+  expect_octahedron(load_mesh(write(dir, "o.obj", obj(kOctaVertices, polys(kOctaFaces)))));
+}
+
+TEST_F(MeshIo, ReadsAnOffOctahedron) {
+  expect_octahedron(load_mesh(write(dir, "o.off", off(kOctaVertices, kOctaFaces))));
+}
+
+TEST_F(MeshIo, ReadsAnAsciiPlyOctahedron) {
+  expect_octahedron(load_mesh(write(dir, "o.ply", ply(kOctaVertices, kOctaFaces))));
+}
+
+TEST_F(MeshIo, ReadsAnAsciiStlOctahedronAndWeldsItsCorners) {
+  const LoadedMesh m = load_mesh(write(dir, "o.stl", ascii_stl(kOctaVertices, kOctaFaces)));
+  expect_octahedron(m);
+}
+
+TEST_F(MeshIo, ReadsABinaryStlOctahedronAndWeldsItsCorners) {
+  expect_octahedron(load_mesh(write(dir, "o.stl", binary_stl(kOctaVertices, kOctaFaces, 8))));
+}
+
+TEST_F(MeshIo, ExtensionIsCaseInsensitive) {
+  expect_octahedron(load_mesh(write(dir, "o.OBJ", obj(kOctaVertices, polys(kOctaFaces)))));
+}
+
+TEST_F(MeshIo, RoundTripOfARealMeshThroughEveryFormatKeepsItsTopologyAndArea) {
+  const Mesh spot = load_mesh(test::example_mesh("spot_128.obj")).mesh;
+  const MeshStats ref = compute_mesh_stats(spot);
+  for (const auto& [name, bytes] : std::vector<std::pair<std::string, std::string>>{
+           {"s.off", off(spot.vertices, spot.faces)},
+           {"s.ply", ply(spot.vertices, spot.faces)},
+           {"s.stl", ascii_stl(spot.vertices, spot.faces)},
+           {"b.stl", binary_stl(spot.vertices, spot.faces, static_cast<std::uint32_t>(spot.faces.size()))}}) {
+    const MeshStats s = compute_mesh_stats(load_mesh(write(dir, name, bytes)).mesh);
+    EXPECT_EQ(s.faces, ref.faces) << name;
+    EXPECT_EQ(s.vertices, ref.vertices) << name;
+    EXPECT_EQ(s.genus, ref.genus) << name;
+    EXPECT_TRUE(s.closed) << name;
+    EXPECT_NEAR(s.surface_area, ref.surface_area, 1e-4 * ref.surface_area) << name;
+  }
+}
+
+TEST_F(MeshIo, QuadsAndNGonsAreTriangulatedWithoutSlivers) {
+  // A cube of quads whose top is split into a planar hexagon-with-points n-gon.
+  std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::vector<std::vector<int>> f{{0, 3, 2, 1}, {0, 1, 5, 4}, {1, 2, 6, 5},
+                                  {2, 3, 7, 6}, {3, 0, 4, 7}, {4, 5, 6, 7}};
+  const LoadedMesh m = load_mesh(write(dir, "cube.obj", obj(v, f)));
+  EXPECT_EQ(m.mesh.num_faces(), 12);
+  EXPECT_EQ(m.original_faces, 6);
+  EXPECT_NEAR(signed_volume(m.mesh), 1.0, 1e-12);
+  ASSERT_FALSE(m.notes.empty());
+  EXPECT_NE(m.notes[0].find("triangulated 6 quads"), std::string::npos);
+}
+
+TEST_F(MeshIo, NonConvexPolygonIsTriangulatedInsideItself) {
+  // An L-shaped hexagon: a fan from vertex 0 would leave the polygon.
+  std::vector<Vec3> v{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+  const Mesh m = load_mesh(write(dir, "l.obj", obj(v, {{3, 4, 5, 0, 1, 2}}))).mesh;
+  ASSERT_EQ(m.num_faces(), 4);
+  double area = 0;
+  for (int f = 0; f < m.num_faces(); ++f) {
+    area += face_area(m, f);
+    EXPECT_GT(face_normal(m, f).z, 0.99) << "no triangle is flipped";
+  }
+  EXPECT_NEAR(area, 3.0, 1e-12);
+}
+
+TEST_F(MeshIo, InconsistentlyOrientedFacesAreReoriented) {
+  auto f = polys(kOctaFaces);
+  std::swap(f[3][1], f[3][2]);
+  const LoadedMesh m = load_mesh(write(dir, "flip.obj", obj(kOctaVertices, f)));
+  expect_octahedron(m);
+  EXPECT_NE(m.notes.front().find("re-oriented 1 face"), std::string::npos);
+}
+
+TEST_F(MeshIo, InsideOutClosedMeshIsTurnedOutward) {
+  auto f = polys(kOctaFaces);
+  for (auto& p : f)
+    std::swap(p[1], p[2]);
+  const LoadedMesh m = load_mesh(write(dir, "inside_out.obj", obj(kOctaVertices, f)));
+  expect_octahedron(m);
+}
+
+TEST_F(MeshIo, PinchedVertexIsSplitIntoOneCopyPerFan) {
+  // Two octahedra touching at one vertex (0 of the first is 1 of the second, shifted by 2 in x).
+  std::vector<Vec3> v = kOctaVertices;
+  auto f = polys(kOctaFaces);
+  std::vector<int> second(6);
+  for (int i = 0; i < 6; ++i) {
+    if (i == 1) {
+      second[i] = 0;
+      continue;
+    }
+    second[i] = static_cast<int>(v.size());
+    v.push_back(kOctaVertices[i] + Vec3{2, 0, 0});
+  }
+  for (const auto& t : kOctaFaces)
+    f.push_back({second[t[0]], second[t[1]], second[t[2]]});
+  const LoadedMesh m = load_mesh(write(dir, "pinch.obj", obj(v, f)));
+  const MeshStats s = compute_mesh_stats(m.mesh);
+  EXPECT_EQ(s.vertices, 12);
+  EXPECT_EQ(s.components, 2);
+  EXPECT_EQ(s.genus, 0);
+}
+
+TEST_F(MeshIo, CoincidentCornersAreCollapsed) {
+  // Split face 0 of the octahedron at a new vertex that coincides with corner 0: two zero-area faces.
+  std::vector<Vec3> v = kOctaVertices;
+  v.push_back(v[0]);
+  auto f = polys(kOctaFaces);
+  f[0] = {0, 2, 6};
+  f.push_back({6, 2, 4});
+  f.push_back({0, 6, 4});
+  const LoadedMesh m = load_mesh(write(dir, "needle.obj", obj(v, f)));
+  expect_octahedron(m);
+}
+
+TEST_F(MeshIo, CornerOnTheOppositeEdgeIsFlippedAway) {
+  // Face 0 of the octahedron is split at the midpoint of its edge 0-2, and a zero-area cap (0, 2, mid)
+  // closes the gap between the halves and face 4 across that edge.
+  std::vector<Vec3> v = kOctaVertices;
+  v.push_back((v[0] + v[2]) / 2);
+  auto f = polys(kOctaFaces);
+  f[0] = {0, 6, 4};
+  f.push_back({6, 2, 4});
+  f.push_back({0, 2, 6});
+  const LoadedMesh m = load_mesh(write(dir, "cap.obj", obj(v, f)));
+  const MeshStats s = compute_mesh_stats(m.mesh);
+  EXPECT_TRUE(s.closed);
+  EXPECT_EQ(s.genus, 0);
+  EXPECT_EQ(m.mesh.num_faces(), 10);
+  EXPECT_NEAR(signed_volume(m.mesh), 4.0 / 3.0, 1e-12);
+  for (int face = 0; face < m.mesh.num_faces(); ++face)
+    EXPECT_GT(face_area(m.mesh, face), 0.1);
+  EXPECT_NE(m.notes.front().find("zero-area"), std::string::npos);
+}
+
+TEST_F(MeshIo, DecimationReachesTheFaceBudgetAndKeepsTopology) {
+  LoadOptions o;
+  o.max_faces = 100;
+  const LoadedMesh m = load_mesh(test::example_mesh("spot_350.obj"), o);
+  EXPECT_LE(m.mesh.num_faces(), 100);
+  EXPECT_GT(m.mesh.num_faces(), 50);
+  const MeshStats s = compute_mesh_stats(m.mesh);
+  EXPECT_TRUE(s.closed);
+  EXPECT_EQ(s.genus, 0);
+  EXPECT_NE(m.notes.back().find("decimated from 350"), std::string::npos);
+  EXPECT_EQ(m.original_faces, 350);
+}
+
+TEST_F(MeshIo, MissingFileIsAnInputError) {
+  EXPECT_EQ(problem_of(dir / "nope.obj"), "no such file");
+}
+
+TEST_F(MeshIo, EmptyFileIsAnInputError) {
+  EXPECT_EQ(problem_of(write(dir, "e.obj", "")), "empty file");
+}
+
+TEST_F(MeshIo, UnknownExtensionIsAnInputError) {
+  EXPECT_NE(problem_of(write(dir, "m.xyz", "v 0 0 0\n")).find("unsupported file type"), std::string::npos);
+}
+
+TEST_F(MeshIo, DirectoryIsAnInputError) {
+  fs::create_directories(dir / "d.obj");
+  EXPECT_EQ(problem_of(dir / "d.obj"), "not a regular file");
+}
+
+TEST_F(MeshIo, TruncatedObjFaceIsAnInputError) {
+  std::string text = obj(kOctaVertices, polys(kOctaFaces)) + "f 1 2";
+  EXPECT_NE(problem_of(write(dir, "t.obj", text)).find("truncated"), std::string::npos);
+}
+
+TEST_F(MeshIo, ObjWithoutFacesIsAnInputError) {
+  EXPECT_NE(problem_of(write(dir, "v.obj", "v 0 0 0\nv 1 0 0\n")).find("no faces"), std::string::npos);
+}
+
+TEST_F(MeshIo, NonFiniteCoordinatesAreInputErrorsInEveryTextFormat) {
+  std::vector<Vec3> v = kOctaVertices;
+  v[2].y = NAN;
+  EXPECT_NE(problem_of(write(dir, "n.obj", obj(v, polys(kOctaFaces)))).find("non-finite"), std::string::npos);
+  v[2].y = INFINITY;
+  EXPECT_NE(problem_of(write(dir, "n.stl", ascii_stl(v, kOctaFaces))).find("non-finite"), std::string::npos);
+  EXPECT_NE(problem_of(write(dir, "b.stl", binary_stl(v, kOctaFaces, 8))).find("non-finite"),
+            std::string::npos);
+}
+
+TEST_F(MeshIo, UnparsableCoordinateIsAnInputError) {
+  EXPECT_NE(problem_of(write(dir, "u.obj", "v 0 zero 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).find("unparsable"),
+            std::string::npos);
+}
+
+TEST_F(MeshIo, FaceIndexOutOfRangeIsAnInputError) {
+  auto f = polys(kOctaFaces);
+  f[5][1] = 9;
+  EXPECT_NE(problem_of(write(dir, "i.obj", obj(kOctaVertices, f))).find("references vertex 10"),
+            std::string::npos);
+  std::vector<std::array<int, 3>> t = kOctaFaces;
+  t[5][1] = 9;
+  EXPECT_NE(problem_of(write(dir, "i.off", off(kOctaVertices, t))).find("vertex"), std::string::npos);
+}
+
+TEST_F(MeshIo, BinaryStlWhoseSizeDisagreesWithItsCountIsAnInputError) {
+  EXPECT_NE(
+      problem_of(write(dir, "hi.stl", binary_stl(kOctaVertices, kOctaFaces, 9))).find("says 9 triangles"),
+      std::string::npos);
+  EXPECT_NE(
+      problem_of(write(dir, "lo.stl", binary_stl(kOctaVertices, kOctaFaces, 7))).find("says 7 triangles"),
+      std::string::npos);
+}
+
+TEST_F(MeshIo, TruncatedAsciiStlIsAnInputError) {
+  std::string text = ascii_stl(kOctaVertices, kOctaFaces);
+  EXPECT_NE(problem_of(write(dir, "t.stl", text.substr(0, text.size() / 2))).find("STL"), std::string::npos);
+}
+
+TEST_F(MeshIo, OffHeaderPromisingMoreThanTheFileHoldsIsAnInputError) {
+  std::string text = "OFF\n100000 200000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_NE(problem_of(write(dir, "h.off", text)).find("truncated"), std::string::npos);
+}
+
+TEST_F(MeshIo, PlyHeaderPromisingMoreThanTheFileHoldsIsAnInputError) {
+  std::string text = ply(kOctaVertices, kOctaFaces);
+  text.replace(text.find("vertex 6"), 8, "vertex 600000");
+  EXPECT_NE(problem_of(write(dir, "h.ply", text)).find("truncated"), std::string::npos);
+}
+
+TEST_F(MeshIo, NonManifoldEdgeIsAnInputError) {
+  std::vector<Vec3> v = kOctaVertices;
+  v.push_back({1, 1, 1});
+  auto f = polys(kOctaFaces);
+  f.push_back({0, 2, 6});
+  EXPECT_NE(problem_of(write(dir, "fin.obj", obj(v, f))).find("non-manifold edge between vertices 1 and 3"),
+            std::string::npos);
+}
+
+TEST_F(MeshIo, MoebiusStripIsANonOrientableInputError) {
+  EXPECT_NE(problem_of(write(dir, "m.obj", moebius_obj(12))).find("non-orientable"), std::string::npos);
+}
+
+TEST_F(MeshIo, FaceLimitIsCheckedBeforeRepairs) {
+  LoadOptions o;
+  o.face_limit = 7;
+  EXPECT_NE(
+      problem_of(write(dir, "o.obj", obj(kOctaVertices, polys(kOctaFaces))), o).find("over the limit of 7"),
+      std::string::npos);
+}
+
+TEST_F(MeshIo, FileSizeLimitIsCheckedBeforeReading) {
+  LoadOptions o;
+  o.max_file_bytes = 16;
+  EXPECT_NE(problem_of(write(dir, "o.obj", obj(kOctaVertices, polys(kOctaFaces))), o).find("over the limit"),
+            std::string::npos);
+}
+
+TEST_F(MeshIo, EveryTrickyCorpusFileLoadsAsAValidMesh) {
+  if (!test::shared_meshes()) GTEST_SKIP() << "../shared/meshes not present";
+  for (const auto& entry : fs::directory_iterator(*test::shared_meshes() / "tricky")) {
+    const LoadedMesh m = load_mesh(entry.path());
+    EXPECT_GT(m.mesh.num_faces(), 0) << entry.path();
+  }
+}
+
+TEST_F(MeshIo, EveryBadCorpusFileIsAnInputError) {
+  if (!test::shared_meshes()) GTEST_SKIP() << "../shared/meshes not present";
+  for (const auto& entry : fs::directory_iterator(*test::shared_meshes() / "bad"))
+    problem_of(entry.path());
+}
