@@ -433,3 +433,24 @@ TEST_F(MeshIo, EveryBadCorpusFileIsAnInputError) {
   for (const auto& entry : fs::directory_iterator(*test::shared_meshes() / "bad"))
     problem_of(entry.path());
 }
+
+TEST_F(MeshIo, SeamOfRepeatedVerticesInAnObjIsWeldedShut) {
+  // The octahedron with vertex 4 (the top) repeated for the faces on the y < 0 side.
+  std::vector<Vec3> v = kOctaVertices;
+  v.push_back(v[4]);
+  auto f = polys(kOctaFaces);
+  f[2] = {1, 3, 6};
+  f[3] = {3, 0, 6};
+  const LoadedMesh m = load_mesh(write(dir, "seam.obj", obj(v, f)));
+  expect_octahedron(m);
+  EXPECT_NE(m.notes.front().find("welded 1 coincident vertex along open seams"), std::string::npos);
+}
+
+TEST_F(MeshIo, SeamWeldThatWouldMakeAnEdgeNonManifoldIsNotDone) {
+  // Two separate triangles, each with an edge lying exactly on the other's plus a third open triangle on
+  // the same segment: welding all three would put three faces on one edge, so none is welded.
+  std::vector<Vec3> v{{0, 0, 0},  {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0},
+                      {0, -1, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+  const LoadedMesh m = load_mesh(write(dir, "fins.obj", obj(v, {{0, 1, 2}, {4, 3, 5}, {6, 7, 8}})));
+  EXPECT_EQ(compute_mesh_stats(m.mesh).components, 3);
+}

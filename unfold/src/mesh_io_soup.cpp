@@ -148,6 +148,46 @@ std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, co
   return total_flips;
 }
 
+// Indexed files often repeat a vertex along a seam (texture or normal splits), which would leave the
+// seam cut open. Coincident vertices on boundary edges are welded, but only when the welded mesh stays
+// edge-manifold and orientable: the file's own connectivity wins over a weld that would break it.
+std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri>& tris) {
+  const EdgeFaces map = edge_faces(tris);
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> remap(points.size());
+  std::iota(remap.begin(), remap.end(), 0);
+  std::size_t welded = 0;
+  for (const auto& [key, uses] : map) {
+    if (uses.size() != 1) continue;
+    for (int v : {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)}) {
+      const Vec3 p = points[v];
+      auto [it, inserted] = first.try_emplace({p.x, p.y, p.z}, v);
+      if (!inserted && it->second != v && remap[v] == v) {
+        remap[v] = it->second;
+        ++welded;
+      }
+    }
+  }
+  if (welded == 0) return 0;
+  std::vector<Tri> trial = tris;
+  for (Tri& t : trial)
+    for (int& v : t)
+      v = remap[v];
+  for (const Tri& t : trial)
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return 0;
+  const EdgeFaces welded_map = edge_faces(trial);
+  for (const auto& [key, uses] : welded_map)
+    if (uses.size() > 2) return 0;
+  try {
+    std::vector<Tri> oriented = trial;
+    orient_consistently(oriented, welded_map, "");
+  } catch (const InputError&) {
+    return 0;
+  }
+  tris = std::move(trial);
+  return welded;
+}
+
 // Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
 // collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
 // opposite edge is removed by flipping that edge with the neighbour across it.
@@ -350,6 +390,10 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   }
   std::vector<Tri> tris = triangulate_all(soup, notes);
   std::vector<Vec3> points = std::move(soup.vertices);
+  if (!options.weld_all) {
+    if (const std::size_t seams = weld_boundary_seams(points, tris); seams > 0)
+      notes.push_back("welded " + plural(seams, "coincident vertex") + " along open seams");
+  }
 
   EdgeFaces map = edge_faces(tris);
   check_edge_manifold(tris, map, file_index, name);
