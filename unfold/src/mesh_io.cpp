@@ -15,6 +15,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/decimate.hpp"
@@ -115,52 +116,61 @@ std::string read_all(const fs::path& path, const std::string& name) {
 // going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
 // user can get wrong are checked here first, line by line, with file line numbers in the messages.
 void check_obj_text(const std::string& text, const std::string& name) {
-  std::size_t line_no = 0, pos = 0;
-  int vertices = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    const bool last_line_unterminated = end == std::string::npos;
-    if (last_line_unterminated) end = text.size();
+  // Pointer scanning, not iostreams: this pass runs over every byte of files up to the size limit.
+  // std::string keeps a terminating NUL, so strtod/strtol stop at the end of the buffer too.
+  const char* p = text.c_str();
+  const char* const end = p + text.size();
+  std::size_t line_no = 0;
+  long vertices = 0;
+  auto next_token = [](const char*& q, const char* eol) -> std::string_view {
+    while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
+      ++q;
+    const char* start = q;
+    while (q < eol && *q != ' ' && *q != '\t' && *q != '\r')
+      ++q;
+    return {start, static_cast<std::size_t>(q - start)};
+  };
+  while (p < end) {
+    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    const bool last_line_unterminated = eol == nullptr;
+    if (last_line_unterminated) eol = end;
     ++line_no;
-    std::string line = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (line.size() < 2) continue;
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    const std::string where = " (line " + std::to_string(line_no) + ")";
+    const char* q = p;
+    p = eol + 1;
+    const std::string_view tag = next_token(q, eol);
+    if (tag != "v" && tag != "f") continue;
+    const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
     if (tag == "v") {
       ++vertices;
-      std::string tok;
       for (int k = 0; k < 3; ++k) {
-        if (!(ls >> tok))
+        const std::string_view tok = next_token(q, eol);
+        if (tok.empty())
           throw InputError(name, "vertex " + std::to_string(vertices) + " has fewer than 3 coordinates" +
-                                     (last_line_unterminated ? " (truncated file?)" : "") + where);
+                                     (last_line_unterminated ? " (truncated file?)" : "") + where());
         char* stop = nullptr;
-        const double x = std::strtod(tok.c_str(), &stop);
-        if (stop == tok.c_str() || *stop != '\0')
-          throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "'" + where);
+        const double x = std::strtod(tok.data(), &stop);
+        if (stop != tok.data() + tok.size())
+          throw InputError(name, "unparsable coordinate '" + std::string(tok.substr(0, 32)) + "'" + where());
         if (!std::isfinite(x))
           throw InputError(name,
-                           "vertex " + std::to_string(vertices) + " has a non-finite coordinate" + where);
+                           "vertex " + std::to_string(vertices) + " has a non-finite coordinate" + where());
       }
-    } else if (tag == "f") {
+    } else {
       int corners = 0;
-      std::string tok;
-      while (ls >> tok) {
+      for (std::string_view tok = next_token(q, eol); !tok.empty(); tok = next_token(q, eol)) {
         char* stop = nullptr;
-        const long idx = std::strtol(tok.c_str(), &stop, 10);
-        if (stop == tok.c_str() || (*stop != '\0' && *stop != '/'))
-          throw InputError(name, "unparsable face corner '" + tok.substr(0, 32) + "'" + where);
+        const long idx = std::strtol(tok.data(), &stop, 10);
+        if (stop == tok.data() || (stop != tok.data() + tok.size() && *stop != '/'))
+          throw InputError(name, "unparsable face corner '" + std::string(tok.substr(0, 32)) + "'" + where());
         const long resolved = idx < 0 ? vertices + idx + 1 : idx;
         if (resolved < 1 || resolved > vertices)
           throw InputError(name, "face references vertex " + std::to_string(idx) + " (only " +
-                                     std::to_string(vertices) + " vertices so far)" + where);
+                                     std::to_string(vertices) + " vertices so far)" + where());
         ++corners;
       }
       if (corners < 3)
         throw InputError(name, std::string(last_line_unterminated ? "truncated file: " : "") +
-                                   "face with only " + std::to_string(corners) + " corners" + where);
+                                   "face with only " + std::to_string(corners) + " corners" + where());
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <span>
 #include <unordered_map>
 
 #include "foldkit/error.hpp"
@@ -36,16 +37,66 @@ std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + word + "s";
 }
 
-/// (face, corner) pairs of the faces using each undirected edge.
-using EdgeFaces = std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>>;
+/// (face, corner) pairs of the faces using each undirected edge: flat sorted arrays rather than a hash map
+/// of vectors, because it is rebuilt a few times per load and a million small vectors cost more than the
+/// whole rest of the repair.
+class EdgeFaces {
+ public:
+  using Uses = std::span<const std::pair<int, int>>;
+  explicit EdgeFaces(const std::vector<Tri>& tris) {
+    std::vector<std::pair<std::uint64_t, std::pair<int, int>>> all;
+    all.reserve(tris.size() * 3);
+    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+      for (int i = 0; i < 3; ++i)
+        all.push_back({edge_key(tris[f][i], tris[f][(i + 1) % 3]), {f, i}});
+    std::sort(all.begin(), all.end());
+    uses_.reserve(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      if (k == 0 || all[k].first != all[k - 1].first) {
+        keys_.push_back(all[k].first);
+        start_.push_back(static_cast<int>(k));
+      }
+      uses_.push_back(all[k].second);
+    }
+    start_.push_back(static_cast<int>(uses_.size()));
+  }
+  Uses at(std::uint64_t key) const {
+    const auto it = std::lower_bound(keys_.begin(), keys_.end(), key);
+    if (it == keys_.end() || *it != key) return {};
+    return group(static_cast<std::size_t>(it - keys_.begin()));
+  }
+  bool count(std::uint64_t key) const { return !at(key).empty(); }
+  std::size_t size() const { return keys_.size(); }
+  Uses group(std::size_t k) const {
+    return Uses(uses_.data() + start_[k], static_cast<std::size_t>(start_[k + 1] - start_[k]));
+  }
+
+  /// Iterates (key, uses) pairs.
+  class Iterator {
+   public:
+    Iterator(const EdgeFaces* m, std::size_t k) : m_(m), k_(k) {}
+    std::pair<std::uint64_t, Uses> operator*() const { return {m_->keys_[k_], m_->group(k_)}; }
+    Iterator& operator++() {
+      ++k_;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return k_ != o.k_; }
+
+   private:
+    const EdgeFaces* m_;
+    std::size_t k_;
+  };
+  Iterator begin() const { return {this, 0}; }
+  Iterator end() const { return {this, keys_.size()}; }
+
+ private:
+  std::vector<std::uint64_t> keys_;
+  std::vector<int> start_;
+  std::vector<std::pair<int, int>> uses_;
+};
 
 EdgeFaces edge_faces(const std::vector<Tri>& tris) {
-  EdgeFaces map;
-  map.reserve(tris.size() * 2);
-  for (int f = 0; f < static_cast<int>(tris.size()); ++f)
-    for (int i = 0; i < 3; ++i)
-      map[edge_key(tris[f][i], tris[f][(i + 1) % 3])].push_back({f, i});
-  return map;
+  return EdgeFaces(tris);
 }
 
 // Twice the area over the squared longest edge (the height over the length) below which a triangle counts
@@ -399,7 +450,6 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   check_edge_manifold(tris, map, file_index, name);
   if (const std::size_t flips = orient_consistently(tris, map, name); flips > 0)
     notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
-  map.clear();
 
   if (const std::size_t fixed = remove_zero_area(points, tris, name); fixed > 0)
     notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
