@@ -44,12 +44,26 @@ class EdgeFaces {
  public:
   using Uses = std::span<const std::pair<int, int>>;
   explicit EdgeFaces(const std::vector<Tri>& tris) {
-    std::vector<std::pair<std::uint64_t, std::pair<int, int>>> all;
-    all.reserve(tris.size() * 3);
-    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+    // Counting sort by the smaller vertex, then a tiny sort per vertex: linear where a global sort of
+    // every half-edge was the slowest part of loading.
+    int nv = 0;
+    for (const Tri& t : tris)
+      nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});
+    std::vector<int> bucket(static_cast<std::size_t>(nv) + 1, 0);
+    for (const Tri& t : tris)
       for (int i = 0; i < 3; ++i)
-        all.push_back({edge_key(tris[f][i], tris[f][(i + 1) % 3]), {f, i}});
-    std::sort(all.begin(), all.end());
+        ++bucket[std::min(t[i], t[(i + 1) % 3]) + 1];
+    for (int v = 0; v < nv; ++v)
+      bucket[v + 1] += bucket[v];
+    std::vector<std::pair<std::uint64_t, std::pair<int, int>>> all(tris.size() * 3);
+    std::vector<int> fill(bucket.begin(), bucket.end() - 1);
+    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+      for (int i = 0; i < 3; ++i) {
+        const int a = tris[f][i], b = tris[f][(i + 1) % 3];
+        all[fill[std::min(a, b)]++] = {edge_key(a, b), {f, i}};
+      }
+    for (int v = 0; v < nv; ++v)
+      std::sort(all.begin() + bucket[v], all.begin() + bucket[v + 1]);
     uses_.reserve(all.size());
     for (std::size_t k = 0; k < all.size(); ++k) {
       if (k == 0 || all[k].first != all[k - 1].first) {
