@@ -454,3 +454,44 @@ TEST_F(MeshIo, SeamWeldThatWouldMakeAnEdgeNonManifoldIsNotDone) {
   const LoadedMesh m = load_mesh(write(dir, "fins.obj", obj(v, {{0, 1, 2}, {4, 3, 5}, {6, 7, 8}})));
   EXPECT_EQ(compute_mesh_stats(m.mesh).components, 3);
 }
+
+TEST_F(MeshIo, ReadsABinaryPlyOctahedron) {
+  std::string s =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 8\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const Vec3& p : kOctaVertices) {
+    put_f32(s, static_cast<float>(p.x));
+    put_f32(s, static_cast<float>(p.y));
+    put_f32(s, static_cast<float>(p.z));
+  }
+  for (const auto& t : kOctaFaces) {
+    s.push_back(3);
+    for (int i : t) {
+      char b[4];
+      std::memcpy(b, &i, 4);
+      s.append(b, 4);
+    }
+  }
+  expect_octahedron(load_mesh(write(dir, "b.ply", s)));
+}
+
+TEST_F(MeshIo, PlyHeaderWithAMisspelledKeywordIsAnInputError) {
+  // OpenMesh's reader crashes on this one; the strict header check must catch it first.
+  std::string text = ply(kOctaVertices, kOctaFaces);
+  text.replace(text.find("element vertex"), 7, "elment");
+  EXPECT_NE(problem_of(write(dir, "k.ply", text)).find("unparsable PLY header line"), std::string::npos);
+}
+
+TEST_F(MeshIo, PlyElementWithoutACountIsAnInputError) {
+  // OpenMesh's reader loops forever on this one.
+  std::string text = ply(kOctaVertices, kOctaFaces);
+  text.replace(text.find("element vertex 6"), 16, "element vertex int");
+  EXPECT_NE(problem_of(write(dir, "c.ply", text)).find("element line"), std::string::npos);
+}
+
+TEST_F(MeshIo, PlyWithoutFacesIsAnInputError) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n0 0 0\n";
+  EXPECT_NE(problem_of(write(dir, "p.ply", text)).find("face list"), std::string::npos);
+}

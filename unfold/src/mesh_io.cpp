@@ -266,29 +266,76 @@ void check_off_header(const std::string& text, const std::string& name) {
                         binary ? 16 : 8, text.size(), name);
 }
 
+// OpenMesh's PLY reader loops forever or crashes on some malformed headers (an unknown keyword, an
+// element line without a count), so the header is checked strictly here: only what a triangle mesh needs.
 void check_ply_header(const std::string& text, const std::string& name) {
-  if (text.compare(0, 3, "ply") != 0) throw InputError(name, "not a PLY file (no 'ply' magic)");
+  if (text.compare(0, 4, "ply\n") != 0 && text.compare(0, 5, "ply\r\n") != 0)
+    throw InputError(name, "not a PLY file (no 'ply' magic line)");
   const auto end = text.find("end_header");
   if (end == std::string::npos) throw InputError(name, "truncated PLY header (no end_header)");
+  static const std::vector<std::string> kTypes{"char",  "uchar",  "short",   "ushort", "int",   "uint",
+                                               "float", "double", "int8",    "uint8",  "int16", "uint16",
+                                               "int32", "uint32", "float32", "float64"};
+  const auto is_type = [](const std::string& t) {
+    return std::find(kTypes.begin(), kTypes.end(), t) != kTypes.end();
+  };
   std::istringstream in(text.substr(0, end));
-  std::string line;
+  std::string line, format, element;
   std::uint64_t nv = 0, nf = 0;
-  bool ascii = false;
+  bool has_vertex = false, has_face = false, face_list = false;
+  int xyz = 0, line_no = 0;
+  std::getline(in, line);  // "ply"
+  ++line_no;
   while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream ls(line);
-    std::string word, kind;
-    ls >> word;
-    if (word == "format") {
-      ls >> kind;
-      ascii = kind == "ascii";
-    } else if (word == "element") {
-      long long count = -1;
-      ls >> kind >> count;
-      if (count < 0) throw InputError(name, "unparsable PLY element line '" + line.substr(0, 60) + "'");
-      if (kind == "vertex") nv = static_cast<std::uint64_t>(count);
-      if (kind == "face") nf = static_cast<std::uint64_t>(count);
+    std::vector<std::string> w;
+    for (std::string t; ls >> t;)
+      w.push_back(t);
+    const std::string where = " (PLY header line " + std::to_string(line_no) + ")";
+    if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
+    if (w[0] == "format") {
+      if (w.size() != 3 ||
+          (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian") || w[2] != "1.0")
+        throw InputError(name, "unsupported PLY format line" + where);
+      format = w[1];
+    } else if (w[0] == "element") {
+      if (w.size() != 3 || w[2].find_first_not_of("0123456789") != std::string::npos || w[2].size() > 12)
+        throw InputError(name, "unparsable PLY element line" + where);
+      const std::uint64_t count = std::stoull(w[2]);
+      element = w[1];
+      if (element == "vertex") {
+        if (has_vertex) throw InputError(name, "two vertex elements" + where);
+        has_vertex = true;
+        nv = count;
+      } else if (element == "face") {
+        if (has_face || !has_vertex) throw InputError(name, "face element before vertices or twice" + where);
+        has_face = true;
+        nf = count;
+      } else {
+        throw InputError(name, "unsupported PLY element '" + element.substr(0, 32) + "'" + where);
+      }
+    } else if (w[0] == "property") {
+      if (element.empty()) throw InputError(name, "PLY property before any element" + where);
+      if (w.size() == 5 && w[1] == "list" && is_type(w[2]) && is_type(w[3])) {
+        if (element != "face" || face_list) throw InputError(name, "unsupported PLY list property" + where);
+        if (w[4] != "vertex_indices" && w[4] != "vertex_index")
+          throw InputError(name, "unsupported PLY face list '" + w[4].substr(0, 32) + "'" + where);
+        face_list = true;
+      } else if (w.size() == 3 && is_type(w[1])) {
+        if (element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++xyz;
+      } else {
+        throw InputError(name, "unparsable PLY property line" + where);
+      }
+    } else {
+      throw InputError(name, "unparsable PLY header line '" + line.substr(0, 32) + "'" + where);
     }
   }
+  if (format.empty()) throw InputError(name, "PLY header without a format line");
+  if (!has_vertex || xyz != 3) throw InputError(name, "PLY header without vertex x, y and z");
+  if (!has_face || !face_list) throw InputError(name, "PLY header without a face list");
+  const bool ascii = format == "ascii";
   check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
 }
 
