@@ -495,3 +495,15 @@ TEST_F(MeshIo, PlyWithoutFacesIsAnInputError) {
       "property float z\nend_header\n0 0 0\n";
   EXPECT_NE(problem_of(write(dir, "p.ply", text)).find("face list"), std::string::npos);
 }
+
+TEST_F(MeshIo, NonFiniteCoordinatesInOffAndPlyNameTheVertex) {
+  std::vector<Vec3> v = kOctaVertices;
+  v[2].y = NAN;
+  EXPECT_EQ(problem_of(write(dir, "n.off", off(v, kOctaFaces))), "vertex 3 has a non-finite coordinate");
+  EXPECT_EQ(problem_of(write(dir, "n.ply", ply(v, kOctaFaces))), "vertex 3 has a non-finite coordinate");
+}
+
+TEST_F(MeshIo, OffWithFewerVertexLinesThanDeclaredIsTruncated) {
+  const std::string text = "OFF\n6 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_NE(problem_of(write(dir, "t.off", text)).find("truncated"), std::string::npos);
+}

@@ -244,6 +244,46 @@ void check_declared_counts(std::uint64_t vertices, std::uint64_t faces, std::uin
                                std::to_string(file_bytes) + " bytes can hold");
 }
 
+// OpenMesh's ASCII OFF and PLY readers parse with iostreams: "nan" or a typo derails them into
+// misleading errors downstream. The vertex block is checked here so the message names the vertex.
+void check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uint64_t vertices,
+                              const std::string& name) {
+  const char* p = text.c_str() + std::min(pos, text.size());
+  const char* const end = text.c_str() + text.size();
+  std::uint64_t v = 0;
+  while (v < vertices && p < end) {
+    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    if (!eol) eol = end;
+    const char* q = p;
+    p = eol + 1;
+    int numbers = 0;
+    while (q < eol) {
+      while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
+        ++q;
+      if (q == eol || *q == '#') break;
+      const char* start = q;
+      while (q < eol && *q != ' ' && *q != '\t' && *q != '\r')
+        ++q;
+      const std::string tok(start, q);
+      char* stop = nullptr;
+      const double x = std::strtod(tok.c_str(), &stop);
+      if (stop != tok.c_str() + tok.size())
+        throw InputError(
+            name, "unparsable coordinate '" + tok.substr(0, 32) + "' of vertex " + std::to_string(v + 1));
+      if (!std::isfinite(x))
+        throw InputError(name, "vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
+      ++numbers;
+    }
+    if (numbers == 0) continue;  // blank or comment line
+    if (numbers < 3)
+      throw InputError(name, "vertex " + std::to_string(v + 1) + " has fewer than 3 coordinates");
+    ++v;
+  }
+  if (v < vertices)
+    throw InputError(
+        name, "truncated file: " + std::to_string(v) + " of " + std::to_string(vertices) + " vertices");
+}
+
 void check_off_header(const std::string& text, const std::string& name) {
   std::istringstream in(text);
   std::string magic;
@@ -264,6 +304,12 @@ void check_off_header(const std::string& text, const std::string& name) {
   const bool binary = magic.find("BINARY") != std::string::npos;
   check_declared_counts(static_cast<std::uint64_t>(nv), static_cast<std::uint64_t>(nf), binary ? 12 : 6,
                         binary ? 16 : 8, text.size(), name);
+  if (!binary) {
+    const auto after_counts = in.tellg();
+    if (after_counts >= 0)
+      check_ascii_vertex_block(text, static_cast<std::size_t>(after_counts), static_cast<std::uint64_t>(nv),
+                               name);
+  }
 }
 
 // OpenMesh's PLY reader loops forever or crashes on some malformed headers (an unknown keyword, an
@@ -337,6 +383,10 @@ void check_ply_header(const std::string& text, const std::string& name) {
   if (!has_face || !face_list) throw InputError(name, "PLY header without a face list");
   const bool ascii = format == "ascii";
   check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
+  if (ascii) {
+    const auto body = text.find('\n', end);
+    check_ascii_vertex_block(text, body == std::string::npos ? text.size() : body + 1, nv, name);
+  }
 }
 
 void silence_openmesh() {
