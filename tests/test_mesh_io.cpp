@@ -180,6 +180,8 @@ TEST_F(MeshIo, ReadsAnAsciiPlyOctahedron) {
 TEST_F(MeshIo, ReadsAnAsciiStlOctahedronAndWeldsItsCorners) {
   const LoadedMesh m = load_mesh(write(dir, "o.stl", ascii_stl(kOctaVertices, kOctaFaces)));
   expect_octahedron(m);
+  ASSERT_FALSE(m.notes.empty());
+  EXPECT_EQ(m.notes.front(), "welded 24 triangle corners into 6 shared vertices");
 }
 
 TEST_F(MeshIo, ReadsABinaryStlOctahedronAndWeldsItsCorners) {

@@ -448,6 +448,11 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   LoadedMesh out;
   out.original_faces = static_cast<int>(soup.polygons.size());
   out.mesh = detail::repair_soup(std::move(soup), name, repair, out.notes);
+  if (ext == ".stl")
+    out.notes.insert(out.notes.begin(),
+                     "welded " + std::to_string(3 * static_cast<std::uint64_t>(out.original_faces)) +
+                         " triangle corners into " + std::to_string(out.mesh.num_vertices()) +
+                         " shared vertices");
   if (options.max_faces && out.mesh.num_faces() > *options.max_faces) {
     const int before = out.mesh.num_faces();
     out.mesh = decimate(out.mesh, *options.max_faces);

@@ -415,19 +415,17 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   std::vector<int> file_index(nv);
   std::iota(file_index.begin(), file_index.end(), 0);
   if (options.weld_all) {
+    // The caller reports STL welding as corners -> vertices: OpenMesh's STL reader already merges some,
+    // this makes it exact whatever the reader did.
     std::map<std::array<double, 3>, int> first;
     std::vector<int> remap(nv);
-    std::size_t welded = 0;
     for (int v = 0; v < nv; ++v) {
       const Vec3 p = soup.vertices[v];
-      auto [it, inserted] = first.try_emplace({p.x, p.y, p.z}, v);
-      remap[v] = it->second;
-      if (!inserted) ++welded;
+      remap[v] = first.try_emplace({p.x, p.y, p.z}, v).first->second;
     }
     for (auto& poly : soup.polygons)
       for (int& v : poly)
         v = remap[v];
-    if (welded > 0) notes.push_back("welded " + plural(welded, "coincident vertex"));
   }
 
   std::size_t dropped = 0;
