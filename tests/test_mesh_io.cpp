@@ -509,3 +509,8 @@ TEST_F(MeshIo, OffWithFewerVertexLinesThanDeclaredIsTruncated) {
   const std::string text = "OFF\n6 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   EXPECT_NE(problem_of(write(dir, "t.off", text)).find("truncated"), std::string::npos);
 }
+
+TEST_F(MeshIo, MeshOfOnlyZeroAreaFacesIsAnInputError) {
+  EXPECT_EQ(problem_of(write(dir, "line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")),
+            "every face has zero area");
+}

@@ -465,6 +465,7 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
 
   if (const std::size_t fixed = remove_zero_area(points, tris, name); fixed > 0)
     notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
+  if (tris.empty()) throw InputError(name, "every face has zero area");
   if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
     notes.push_back("split " + plural(split, "non-manifold vertex") + " into one copy per fan of faces");
 
