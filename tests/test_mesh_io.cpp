@@ -514,3 +514,15 @@ TEST_F(MeshIo, MeshOfOnlyZeroAreaFacesIsAnInputError) {
   EXPECT_EQ(problem_of(write(dir, "line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")),
             "every face has zero area");
 }
+
+TEST_F(MeshIo, FaceLimitIsCheckedOnDeclaredCountsInEveryFormat) {
+  LoadOptions o;
+  o.face_limit = 7;
+  for (const auto& [name, bytes] :
+       std::vector<std::pair<std::string, std::string>>{{"o.off", off(kOctaVertices, kOctaFaces)},
+                                                        {"o.ply", ply(kOctaVertices, kOctaFaces)},
+                                                        {"o.stl", binary_stl(kOctaVertices, kOctaFaces, 8)}})
+    EXPECT_EQ(problem_of(write(dir, name, bytes), o),
+              "at least 8 triangles, over the limit of 7 (decimate the mesh first)")
+        << name;
+}

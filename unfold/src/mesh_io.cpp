@@ -115,13 +115,22 @@ std::string read_all(const fs::path& path, const std::string& name) {
 // OpenMesh's OBJ reader parses numbers with iostreams, which reject "nan" and "inf" and silently keep
 // going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
 // user can get wrong are checked here first, line by line, with file line numbers in the messages.
-void check_obj_text(const std::string& text, const std::string& name) {
+// Checked on the counts a file declares, before OpenMesh parses and before any repair: a file over the
+// limit fails in a fraction of a second rather than after minutes of work and gigabytes of memory.
+void check_face_limit(std::uint64_t triangles, int face_limit, const std::string& name) {
+  if (triangles > static_cast<std::uint64_t>(face_limit))
+    throw InputError(name, "at least " + std::to_string(triangles) + " triangles, over the limit of " +
+                               std::to_string(face_limit) + " (decimate the mesh first)");
+}
+
+void check_obj_text(const std::string& text, const std::string& name, int face_limit) {
   // Pointer scanning, not iostreams: this pass runs over every byte of files up to the size limit.
   // std::string keeps a terminating NUL, so strtod/strtol stop at the end of the buffer too.
   const char* p = text.c_str();
   const char* const end = p + text.size();
   std::size_t line_no = 0;
   long vertices = 0;
+  std::uint64_t triangles = 0;
   auto next_token = [](const char*& q, const char* eol) -> std::string_view {
     while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
       ++q;
@@ -171,20 +180,25 @@ void check_obj_text(const std::string& text, const std::string& name) {
       if (corners < 3)
         throw InputError(name, std::string(last_line_unterminated ? "truncated file: " : "") +
                                    "face with only " + std::to_string(corners) + " corners" + where());
+      triangles += static_cast<std::uint64_t>(corners - 2);
+      check_face_limit(triangles, face_limit, name);
     }
   }
 }
 
 // A binary STL is an 80-byte header, a 32-bit triangle count and 50 bytes per triangle: the size must
 // agree with the count, or the reader would run past the end or silently drop triangles.
-bool check_stl(const std::string& bytes, const std::string& name) {
+bool check_stl(const std::string& bytes, const std::string& name, int face_limit) {
   std::size_t first = bytes.find_first_not_of(" \t\r\n");
   const bool says_solid = first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
   if (bytes.size() >= 84) {
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, 4);  // little-endian on every platform we build for
     const std::uint64_t expected = 84 + 50 * static_cast<std::uint64_t>(count);
-    if (expected == bytes.size()) return true;
+    if (expected == bytes.size()) {
+      check_face_limit(count, face_limit, name);
+      return true;
+    }
     const bool looks_ascii =
         says_solid && bytes.find("facet") != std::string::npos &&
         std::all_of(
@@ -284,7 +298,7 @@ void check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uin
         name, "truncated file: " + std::to_string(v) + " of " + std::to_string(vertices) + " vertices");
 }
 
-void check_off_header(const std::string& text, const std::string& name) {
+void check_off_header(const std::string& text, const std::string& name, int face_limit) {
   std::istringstream in(text);
   std::string magic;
   in >> magic;
@@ -302,6 +316,7 @@ void check_off_header(const std::string& text, const std::string& name) {
   }
   if (nv < 0 || nf < 0) throw InputError(name, "unparsable OFF header (no vertex and face counts)");
   const bool binary = magic.find("BINARY") != std::string::npos;
+  check_face_limit(static_cast<std::uint64_t>(nf), face_limit, name);
   check_declared_counts(static_cast<std::uint64_t>(nv), static_cast<std::uint64_t>(nf), binary ? 12 : 6,
                         binary ? 16 : 8, text.size(), name);
   if (!binary) {
@@ -314,7 +329,7 @@ void check_off_header(const std::string& text, const std::string& name) {
 
 // OpenMesh's PLY reader loops forever or crashes on some malformed headers (an unknown keyword, an
 // element line without a count), so the header is checked strictly here: only what a triangle mesh needs.
-void check_ply_header(const std::string& text, const std::string& name) {
+void check_ply_header(const std::string& text, const std::string& name, int face_limit) {
   if (text.compare(0, 4, "ply\n") != 0 && text.compare(0, 5, "ply\r\n") != 0)
     throw InputError(name, "not a PLY file (no 'ply' magic line)");
   const auto end = text.find("end_header");
@@ -382,6 +397,7 @@ void check_ply_header(const std::string& text, const std::string& name) {
   if (!has_vertex || xyz != 3) throw InputError(name, "PLY header without vertex x, y and z");
   if (!has_face || !face_list) throw InputError(name, "PLY header without a face list");
   const bool ascii = format == "ascii";
+  check_face_limit(nf, face_limit, name);
   check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
   if (ascii) {
     const auto body = text.find('\n', end);
@@ -420,14 +436,14 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
     throw InputError(name, "empty file (only whitespace)");
   detail::RepairOptions repair;
   if (ext == ".obj") {
-    check_obj_text(bytes, name);
+    check_obj_text(bytes, name, options.face_limit);
   } else if (ext == ".stl") {
-    if (!check_stl(bytes, name)) check_ascii_stl_text(bytes, name);
+    if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
     repair.weld_all = true;
   } else if (ext == ".off") {
-    check_off_header(bytes, name);
+    check_off_header(bytes, name, options.face_limit);
   } else {
-    check_ply_header(bytes, name);
+    check_ply_header(bytes, name, options.face_limit);
   }
 
   silence_openmesh();
