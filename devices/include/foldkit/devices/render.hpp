@@ -1,22 +1,55 @@
 #pragma once
-// Rendering sheets to PDF, SVG and PNG through Cairo. 1 mm on the sheet is 1 mm in the file.
+// Rendering sheets to PDF, SVG and PNG. 1 mm on the sheet is 1 mm in the file.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "foldkit/sheet/sheet.hpp"
 
 namespace foldkit::devices {
 
-struct RenderOptions {
-  double png_dpi = 150;  ///< resolution of PNG previews
+/// A colour, components in [0, 1].
+struct Rgb {
+  double r = 0, g = 0, b = 0;
 };
 
-/// Writes all sheets to `path`, the format chosen by its extension: .pdf (one page per sheet),
-/// .svg (one file per sheet: name.svg, name-2.svg, …), .png (likewise). Written to a temporary file
-/// and renamed, so a failure never leaves a half-written file. Throws OutputError.
+/// How one role is drawn. Dash lengths alternate on/off in millimetres; empty means solid.
+struct RoleStyle {
+  Rgb stroke;                   ///< line colour (and text colour for texts of this role)
+  double width_mm = 0.2;        ///< line width
+  std::vector<double> dash_mm;  ///< on, off, on, off, … lengths; empty = solid
+  bool fill_closed = false;     ///< closed paths of this role are filled with `fill`
+  Rgb fill{1, 1, 1};            ///< fill colour when fill_closed
+};
+
+struct RenderOptions {
+  double png_dpi = 150;                    ///< resolution of PNG previews
+  std::string font_family = "sans-serif";  ///< fontconfig family for texts (embedded in PDF)
+  RoleStyle cut{{0, 0, 0}, 0.25, {}};
+  RoleStyle mountain{{0.62, 0.12, 0.08}, 0.2, {2.5, 0.8, 0.4, 0.8}};  ///< dash-dot
+  RoleStyle valley{{0.08, 0.28, 0.62}, 0.2, {2.0, 1.0}};              ///< dashed
+  RoleStyle tab{{0.45, 0.45, 0.45}, 0.15, {}, true, {0.91, 0.91, 0.91}};
+  RoleStyle label{{0, 0, 0}, 0.2, {}};
+  RoleStyle hint{{0.1, 0.45, 0.15}, 0.2, {}};
+  RoleStyle regmark{{0, 0, 0}, 0.5, {}};  ///< 0.5 mm: the stroke Silhouette's optical sensor expects
+
+  /// The style of `role`.
+  const RoleStyle& style(PathRole role) const;
+};
+
+/// Writes all sheets to `path`, the format chosen by its extension (case-insensitive): .pdf (one page
+/// per sheet, page size = sheet size, fonts embedded), .svg (one file per sheet: name.svg,
+/// name-2.svg, …; one group per role with the role's name as id), .png (likewise, white background,
+/// options.png_dpi). Text heights are cap heights: a "Text" of height_mm h has capitals and digits
+/// h millimetres tall. Every file is written to a temporary file and renamed only once all files are
+/// complete, so a failure never leaves a half-written file. Throws OutputError naming the file.
 /// Returns the files written.
 std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
                                                  const std::filesystem::path& path,
                                                  const RenderOptions& options = {});
+
+/// The file that sheet `index` (0-based) goes to when every sheet gets its own file:
+/// `path` itself for the first, name-2.ext, name-3.ext, … after it.
+std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::size_t index);
 
 }  // namespace foldkit::devices

@@ -1,0 +1,108 @@
+#include "foldkit/devices/render.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/error.hpp"
+#include "render_internal.hpp"
+
+namespace foldkit::devices {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+void check_sheets(const std::vector<Sheet>& sheets, const std::filesystem::path& path) {
+  if (sheets.empty()) throw OutputError(path.string(), "nothing to render: no sheets");
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    const Vec2 size = sheets[i].size_mm;
+    if (!(std::isfinite(size.x) && std::isfinite(size.y) && size.x > 0 && size.y > 0)) {
+      throw OutputError(path.string(), "sheet " + std::to_string(i + 1) + " has no valid size");
+    }
+  }
+}
+
+}  // namespace
+
+const RoleStyle& RenderOptions::style(PathRole role) const {
+  switch (role) {
+    case PathRole::Cut:
+      return cut;
+    case PathRole::Mountain:
+      return mountain;
+    case PathRole::Valley:
+      return valley;
+    case PathRole::Tab:
+      return tab;
+    case PathRole::Label:
+      return label;
+    case PathRole::Hint:
+      return hint;
+    case PathRole::RegMark:
+      return regmark;
+  }
+  return cut;
+}
+
+std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::size_t index) {
+  if (index == 0) return path;
+  std::filesystem::path numbered = path;
+  numbered.replace_filename(path.stem().string() + "-" + std::to_string(index + 1) +
+                            path.extension().string());
+  return numbered;
+}
+
+std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
+                                                 const std::filesystem::path& path,
+                                                 const RenderOptions& options) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".pdf" && ext != ".svg" && ext != ".png") {
+    throw OutputError(path.string(),
+                      "unknown output type '" + path.extension().string() + "' (use .pdf, .svg or .png)");
+  }
+  check_sheets(sheets, path);
+
+  if (ext == ".pdf") {
+    AtomicFile file(path);
+    std::string error;
+    if (!detail::write_pdf(file.stream(), sheets, options, path.stem().string(), error)) {
+      throw OutputError(path.string(), error);
+    }
+    file.commit();
+    return {path};
+  }
+
+  if (ext == ".png" && !(std::isfinite(options.png_dpi) && options.png_dpi > 0)) {
+    throw OutputError(path.string(), "PNG resolution must be a positive number of dots per inch");
+  }
+  // All files are completed before the first rename so that a failure on sheet 3 does not leave
+  // sheets 1 and 2 of a new run beside sheet 3 of an old one.
+  std::vector<AtomicFile> files;
+  files.reserve(sheets.size());
+  const double cap_ratio = ext == ".svg" ? detail::cap_height_ratio(options.font_family) : 0;
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    files.emplace_back(sheet_file_path(path, i));
+    if (ext == ".svg") {
+      detail::write_svg(files.back().stream(), sheets[i], options, cap_ratio);
+    } else {
+      std::string error;
+      if (!detail::write_png(files.back().stream(), sheets[i], options, error)) {
+        throw OutputError(files.back().target().string(), error);
+      }
+    }
+  }
+  std::vector<std::filesystem::path> written;
+  for (AtomicFile& file : files) {
+    file.commit();
+    written.push_back(file.target());
+  }
+  return written;
+}
+
+}  // namespace foldkit::devices

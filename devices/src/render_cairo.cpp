@@ -1,0 +1,197 @@
+// PDF and PNG through Cairo. The sheet is drawn once, in millimetres, onto a surface whose user space
+// is scaled to millimetres: points (1/72 in) for PDF, pixels at the requested dpi for PNG.
+#include <cairo-pdf.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <ostream>
+
+#include "render_internal.hpp"
+
+namespace foldkit::devices::detail {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr double kPointsPerMm = 72.0 / kMmPerInch;
+// Cairo image surfaces are limited to 32767 pixels a side.
+constexpr int kMaxImageSide = 32767;
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::ostream*>(closure);
+  out->write(reinterpret_cast<const char*>(data), length);
+  return *out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+void set_source(cairo_t* cr, Rgb c) {
+  cairo_set_source_rgb(cr, c.r, c.g, c.b);
+}
+
+void trace(cairo_t* cr, const Path& path) {
+  cairo_new_path(cr);
+  bool first = true;
+  for (Vec2 p : path.points_mm) {
+    if (first) {
+      cairo_move_to(cr, p.x, p.y);
+      first = false;
+    } else {
+      cairo_line_to(cr, p.x, p.y);
+    }
+  }
+  if (path.closed) cairo_close_path(cr);
+}
+
+void apply_line_style(cairo_t* cr, const RoleStyle& style) {
+  cairo_set_line_width(cr, style.width_mm);
+  double total = 0;
+  for (double d : style.dash_mm)
+    total += d;
+  if (style.dash_mm.empty() || !(total > 0)) {
+    cairo_set_dash(cr, nullptr, 0, 0);
+  } else {
+    cairo_set_dash(cr, style.dash_mm.data(), static_cast<int>(style.dash_mm.size()), 0);
+  }
+}
+
+void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, PathRole role) {
+  const RoleStyle& style = options.style(role);
+  apply_line_style(cr, style);
+  for (const Path& path : sheet.paths) {
+    if (path.role != role || path.points_mm.empty()) continue;
+    trace(cr, path);
+    if (path.filled) {
+      set_source(cr, style.stroke);
+      cairo_fill_preserve(cr);
+    } else if (path.closed && style.fill_closed) {
+      set_source(cr, style.fill);
+      cairo_fill_preserve(cr);
+    }
+    set_source(cr, style.stroke);
+    cairo_stroke(cr);
+  }
+}
+
+void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  cairo_select_font_face(cr, options.font_family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  for (PathRole role : kPaintOrder) {
+    for (const Text& text : sheet.texts) {
+      if (text.role != role || text.text.empty() || !(text.height_mm > 0)) continue;
+      cairo_save(cr);
+      cairo_translate(cr, text.at_mm.x, text.at_mm.y);
+      // y points down, so a positive Cairo rotation turns clockwise on the page: the Text convention.
+      cairo_rotate(cr, text.angle_rad);
+      cairo_set_font_size(cr, text.height_mm / cap_ratio);
+      set_source(cr, options.style(role).stroke);
+      cairo_move_to(cr, 0, 0);
+      cairo_show_text(cr, text.text.c_str());
+      cairo_restore(cr);
+    }
+  }
+}
+
+double measure_cap_ratio(cairo_t* cr, const std::string& family) {
+  cairo_save(cr);
+  cairo_select_font_face(cr, family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 100);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, "H", &extents);
+  cairo_restore(cr);
+  const double ratio = -extents.y_bearing / 100;
+  // A font without an "H" (or a broken fontconfig) must not blow texts up or make them vanish.
+  return ratio > 0.3 && ratio < 1.2 ? ratio : 0.72;
+}
+
+void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for (PathRole role : kPaintOrder)
+    draw_paths(cr, sheet, options, role);
+  draw_texts(cr, sheet, options, cap_ratio);
+}
+
+}  // namespace
+
+double cap_height_ratio(const std::string& family) {
+  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1));
+  ContextPtr cr(cairo_create(surface.get()));
+  return measure_cap_ratio(cr.get(), family);
+}
+
+bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const RenderOptions& options,
+               const std::string& title, std::string& error) {
+  SurfacePtr surface(cairo_pdf_surface_create_for_stream(write_to_stream, &out,
+                                                         sheets.front().size_mm.x * kPointsPerMm,
+                                                         sheets.front().size_mm.y * kPointsPerMm));
+  cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, title.c_str());
+  cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "foldkit");
+  {
+    ContextPtr cr(cairo_create(surface.get()));
+    const double cap_ratio = measure_cap_ratio(cr.get(), options.font_family);
+    for (const Sheet& sheet : sheets) {
+      // Page size may change between pages; it must be set before anything is drawn on the page.
+      cairo_pdf_surface_set_size(surface.get(), sheet.size_mm.x * kPointsPerMm,
+                                 sheet.size_mm.y * kPointsPerMm);
+      cairo_save(cr.get());
+      cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
+      draw_sheet(cr.get(), sheet, options, cap_ratio);
+      cairo_restore(cr.get());
+      cairo_show_page(cr.get());
+    }
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
+      error = cairo_status_to_string(cairo_status(cr.get()));
+      return false;
+    }
+  }
+  cairo_surface_finish(surface.get());
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    error = cairo_status_to_string(cairo_surface_status(surface.get()));
+    return false;
+  }
+  return true;
+}
+
+std::array<int, 2> png_size_px(const Sheet& sheet, double dpi) {
+  const double px_per_mm = dpi / kMmPerInch;
+  return {static_cast<int>(std::lround(sheet.size_mm.x * px_per_mm)),
+          static_cast<int>(std::lround(sheet.size_mm.y * px_per_mm))};
+}
+
+bool write_png(std::ostream& out, const Sheet& sheet, const RenderOptions& options, std::string& error) {
+  const double px_per_mm = options.png_dpi / kMmPerInch;
+  if (sheet.size_mm.x * px_per_mm > kMaxImageSide || sheet.size_mm.y * px_per_mm > kMaxImageSide) {
+    error = "image too large at this resolution (more than 32767 pixels a side): lower the dpi";
+    return false;
+  }
+  const auto [width_px, height_px] = png_size_px(sheet, options.png_dpi);
+  SurfacePtr surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, std::max(width_px, 1), std::max(height_px, 1)));
+  {
+    ContextPtr cr(cairo_create(surface.get()));
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    cairo_scale(cr.get(), px_per_mm, px_per_mm);
+    draw_sheet(cr.get(), sheet, options, measure_cap_ratio(cr.get(), options.font_family));
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
+      error = cairo_status_to_string(cairo_status(cr.get()));
+      return false;
+    }
+  }
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &out);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    error = cairo_status_to_string(status);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace foldkit::devices::detail

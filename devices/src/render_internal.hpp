@@ -1,0 +1,35 @@
+#pragma once
+// Shared between the renderers: drawing order, number formatting and the text metrics that make
+// `Text::height_mm` a cap height in every format.
+#include <array>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "foldkit/devices/render.hpp"
+
+namespace foldkit::devices::detail {
+
+/// Roles in painting order: fills and marks under everything, cuts above folds, marks on top.
+inline constexpr std::array<PathRole, 7> kPaintOrder = {PathRole::Tab,      PathRole::Hint, PathRole::Valley,
+                                                        PathRole::Mountain, PathRole::Cut,  PathRole::Label,
+                                                        PathRole::RegMark};
+
+/// Cap height of `family` as a fraction of its font size (DejaVu Sans: about 0.73), measured with Cairo
+/// so that PDF, PNG and SVG texts come out the same size.
+double cap_height_ratio(const std::string& family);
+
+/// Writes one sheet as a standalone SVG document.
+void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio);
+
+/// Writes all sheets as one PDF document, one page per sheet. Returns false with `error` set on failure.
+bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const RenderOptions& options,
+               const std::string& title, std::string& error);
+
+/// Writes one sheet as a PNG image at options.png_dpi. Returns false with `error` set on failure.
+bool write_png(std::ostream& out, const Sheet& sheet, const RenderOptions& options, std::string& error);
+
+/// Pixel size of a sheet's PNG preview.
+std::array<int, 2> png_size_px(const Sheet& sheet, double dpi);
+
+}  // namespace foldkit::devices::detail

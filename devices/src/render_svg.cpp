@@ -1,0 +1,144 @@
+// SVG written by hand rather than through Cairo's SVG surface: Cairo 1.16 cannot name groups, and
+// cutting software (Silhouette Studio, Inkscape, Cricut Design Space) picks layers by group id. Every
+// role gets its own <g id="…"> (also marked as an Inkscape layer), present even when empty so that
+// tools can rely on the seven ids, and texts stay <text> elements so they remain editable.
+#include <charconv>
+#include <cmath>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "render_internal.hpp"
+
+namespace foldkit::devices::detail {
+namespace {
+
+// Micrometre precision, locale-independent, no trailing zeros.
+std::string num(double v) {
+  if (!std::isfinite(v)) return "0";
+  if (std::abs(v) < 5e-5) v = 0;
+  char buffer[64];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed, 4);
+  std::string s(buffer, ec == std::errc() ? end : buffer);
+  if (s.find('.') != std::string::npos) {
+    while (!s.empty() && s.back() == '0')
+      s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+  }
+  return s.empty() || s == "-0" ? "0" : s;
+}
+
+std::string colour(Rgb c) {
+  auto channel = [](double v) {
+    const int i = static_cast<int>(std::lround(std::fmin(std::fmax(v, 0.0), 1.0) * 255));
+    constexpr char hex[] = "0123456789abcdef";
+    return std::string{hex[i >> 4], hex[i & 15]};
+  };
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on chained literal + string concatenation.
+  std::string out("#");
+  out.append(channel(c.r)).append(channel(c.g)).append(channel(c.b));
+  return out;
+}
+
+std::string escape(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        // Control characters are not allowed in XML 1.0; they carry no meaning on a sheet.
+        if (static_cast<unsigned char>(c) >= 0x20 || c == '\t') out += c;
+    }
+  }
+  return out;
+}
+
+void write_group_open(std::ostream& out, PathRole role, const RoleStyle& style) {
+  const char* name = role_name(role);
+  out << "  <g id=\"" << name << "\" inkscape:groupmode=\"layer\" inkscape:label=\"" << name << "\"";
+  out << " fill=\"none\" stroke=\"" << colour(style.stroke) << "\" stroke-width=\"" << num(style.width_mm)
+      << "\" stroke-linejoin=\"round\" stroke-linecap=\"butt\"";
+  double total = 0;
+  for (double d : style.dash_mm)
+    total += d;
+  if (!style.dash_mm.empty() && total > 0) {
+    out << " stroke-dasharray=\"";
+    for (std::size_t i = 0; i < style.dash_mm.size(); ++i)
+      out << (i ? " " : "") << num(style.dash_mm[i]);
+    out << "\"";
+  }
+  out << ">\n";
+}
+
+void write_path(std::ostream& out, const Path& path, const RoleStyle& style) {
+  out << "    <path d=\"";
+  for (std::size_t i = 0; i < path.points_mm.size(); ++i) {
+    out << (i == 0 ? "M" : " L") << num(path.points_mm[i].x) << " " << num(path.points_mm[i].y);
+  }
+  if (path.closed) out << " Z";
+  out << "\"";
+  if (path.filled) {
+    out << " fill=\"" << colour(style.stroke) << "\"";
+  } else if (path.closed && style.fill_closed) {
+    out << " fill=\"" << colour(style.fill) << "\"";
+  }
+  out << "/>\n";
+}
+
+void write_text(std::ostream& out, const Text& text, const RenderOptions& options, double cap_ratio) {
+  constexpr double kDegPerRad = 57.29577951308232;
+  out << "    <text x=\"" << num(text.at_mm.x) << "\" y=\"" << num(text.at_mm.y) << "\" font-size=\""
+      << num(text.height_mm / cap_ratio) << "\"";
+  // y points down in SVG too, so a positive angle is clockwise on the page, as in Text.
+  if (text.angle_rad != 0) {
+    out << " transform=\"rotate(" << num(text.angle_rad * kDegPerRad) << " " << num(text.at_mm.x) << " "
+        << num(text.at_mm.y) << ")\"";
+  }
+  out << " fill=\"" << colour(options.style(text.role).stroke) << "\">" << escape(text.text) << "</text>\n";
+}
+
+}  // namespace
+
+void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  const std::string w = num(sheet.size_mm.x), h = num(sheet.size_mm.y);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\""
+      << w << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n";
+  for (PathRole role : kPaintOrder) {
+    const RoleStyle& style = options.style(role);
+    write_group_open(out, role, style);
+    for (const Path& path : sheet.paths) {
+      if (path.role == role && !path.points_mm.empty()) write_path(out, path, style);
+    }
+    bool any_text = false;
+    for (const Text& text : sheet.texts) {
+      if (text.role != role || text.text.empty()) continue;
+      if (!any_text) {
+        // Texts are filled glyphs, not outlines: undo the group's stroke for them.
+        out << "    <g stroke=\"none\" font-family=\"" << escape(options.font_family) << "\">\n";
+        any_text = true;
+      }
+      write_text(out, text, options, cap_ratio);
+    }
+    if (any_text) out << "    </g>\n";
+    out << "  </g>\n";
+  }
+  out << "</svg>\n";
+}
+
+}  // namespace foldkit::devices::detail

@@ -1,0 +1,335 @@
+#include "foldkit/devices/render.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "foldkit/error.hpp"
+#include "test_paths.hpp"
+
+namespace fs = std::filesystem;
+using foldkit::OutputError;
+using foldkit::Path;
+using foldkit::PathRole;
+using foldkit::Sheet;
+using foldkit::Text;
+using foldkit::Vec2;
+using foldkit::devices::render_sheets;
+using foldkit::devices::RenderOptions;
+
+namespace {
+
+constexpr double kPtPerMm = 72.0 / 25.4;
+
+// A sheet with something of every role at known places, so rasterised output can be probed.
+Sheet sample_sheet(Vec2 size_mm) {
+  Sheet s;
+  s.size_mm = size_mm;
+  s.printable_mm.add(Vec2{10, 10});
+  s.printable_mm.add(size_mm - Vec2{10, 10});
+  s.paths.push_back({PathRole::Cut, {{20, 20}, {100, 20}, {100, 100}, {20, 100}}, true, 0});
+  s.paths.push_back({PathRole::Valley, {{20, 20}, {100, 100}}, false, 0});
+  s.paths.push_back({PathRole::Mountain, {{100, 20}, {20, 100}}, false, 0});
+  s.paths.push_back({PathRole::Tab, {{100, 40}, {106, 44}, {106, 76}, {100, 80}}, true, 0});
+  s.paths.push_back({PathRole::Hint, {{120, 120}, {150, 120}}, false});
+  Path mark{PathRole::RegMark, {{10, 10}, {15, 10}, {15, 15}, {10, 15}}, true};
+  mark.filled = true;
+  s.paths.push_back(mark);
+  s.paths.push_back(
+      {PathRole::RegMark, {{size_mm.x - 30, 10}, {size_mm.x - 10, 10}, {size_mm.x - 10, 30}}, false});
+  s.texts.push_back({"17", {40, 60}, 5.0, 0.0, PathRole::Label, 0});
+  s.texts.push_back({"3 <&> 'q'", {120, 130}, 4.0, 0.5, PathRole::Hint, -1});
+  return s;
+}
+
+std::vector<Sheet> two_sheets() {
+  return {sample_sheet({210, 297}), sample_sheet({420, 297})};
+}
+
+std::string run(const std::string& command) {
+  std::string out;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return out;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+    out += buffer.data();
+  ::pclose(pipe);
+  return out;
+}
+
+bool have(const std::string& tool) {
+  return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A binary greyscale PGM (P5, maxval 255) as written by pdftoppm -gray.
+struct Gray {
+  int width = 0, height = 0;
+  std::string pixels;
+  int at_mm(double x_mm, double y_mm, double px_per_mm) const {
+    const int x = static_cast<int>(x_mm * px_per_mm), y = static_cast<int>(y_mm * px_per_mm);
+    return static_cast<unsigned char>(pixels[static_cast<std::size_t>(y) * width + x]);
+  }
+};
+
+Gray read_pgm(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::string magic;
+  int maxval = 0;
+  Gray g;
+  in >> magic >> g.width >> g.height >> maxval;
+  in.get();
+  g.pixels.resize(static_cast<std::size_t>(g.width) * g.height);
+  in.read(g.pixels.data(), static_cast<std::streamsize>(g.pixels.size()));
+  if (magic != "P5" || maxval != 255 || !in) g = {};
+  return g;
+}
+
+std::array<unsigned, 2> png_dimensions(const fs::path& p) {
+  const std::string bytes = read_all(p);
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
+  auto be32 = [&](std::size_t at) {
+    unsigned v = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+    return v;
+  };
+  return {be32(16), be32(20)};
+}
+
+int count_entries(const fs::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir))
+    ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(RenderPdf, HasOnePagePerSheetWithThePageSizeOfTheSheetInMillimetres) {
+  if (!have("pdfinfo")) GTEST_SKIP() << "poppler-utils (pdfinfo) not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "model.pdf";
+  const auto written = render_sheets(two_sheets(), pdf);
+  ASSERT_EQ(written, std::vector<fs::path>{pdf});
+  const std::string info = run("pdfinfo -f 1 -l 2 '" + pdf.string() + "'");
+  EXPECT_NE(info.find("Pages:           2"), std::string::npos) << info;
+  std::smatch m;
+  std::regex page_size(R"(Page\s+(\d+) size:\s+([0-9.]+) x ([0-9.]+) pts)");
+  std::vector<std::array<double, 2>> sizes_mm;
+  for (auto it = std::sregex_iterator(info.begin(), info.end(), page_size); it != std::sregex_iterator();
+       ++it) {
+    sizes_mm.push_back({std::stod((*it)[2]) / kPtPerMm, std::stod((*it)[3]) / kPtPerMm});
+  }
+  ASSERT_EQ(sizes_mm.size(), 2u) << info;
+  EXPECT_NEAR(sizes_mm[0][0], 210, 0.05);
+  EXPECT_NEAR(sizes_mm[0][1], 297, 0.05);
+  EXPECT_NEAR(sizes_mm[1][0], 420, 0.05);
+  EXPECT_NEAR(sizes_mm[1][1], 297, 0.05);
+}
+
+TEST(RenderPdf, EmbedsTheFontOfItsTexts) {
+  if (!have("pdffonts")) GTEST_SKIP() << "poppler-utils (pdffonts) not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "fonts.pdf";
+  render_sheets(two_sheets(), pdf);
+  const std::string fonts = run("pdffonts '" + pdf.string() + "'");
+  // One line per font after the two header lines; the "emb" column must say yes for every one.
+  std::istringstream lines(fonts);
+  std::string line;
+  int font_lines = 0;
+  for (int i = 0; std::getline(lines, line); ++i) {
+    if (i < 2 || line.empty()) continue;
+    ++font_lines;
+    EXPECT_TRUE(std::regex_search(line, std::regex(R"(\s(yes|no)\s+yes\s+(yes|no)\s+\d+\s+\d+\s*$)")))
+        << "font not embedded: " << line;
+  }
+  EXPECT_GE(font_lines, 1) << fonts;
+}
+
+TEST(RenderPdf, PutsTextAtItsBaselinePointWithItsCapHeight) {
+  if (!have("pdftotext")) GTEST_SKIP() << "poppler-utils (pdftotext) not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "text.pdf";
+  render_sheets({sample_sheet({210, 297})}, pdf);
+  const std::string html = run("pdftotext -bbox -f 1 -l 1 '" + pdf.string() + "' -");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      html, m,
+      std::regex(
+          R"re(<word xMin="([0-9.]+)" yMin="([0-9.]+)" xMax="([0-9.]+)" yMax="([0-9.]+)">17</word>)re")))
+      << html;
+  const double x_min = std::stod(m[1]) / kPtPerMm, y_min = std::stod(m[2]) / kPtPerMm;
+  const double y_max = std::stod(m[4]) / kPtPerMm;
+  EXPECT_NEAR(x_min, 40, 0.8) << "text starts at its anchor";
+  // poppler's box spans the font's ascent and descent around the 60 mm baseline.
+  EXPECT_LT(y_min, 60 - 5.0);
+  EXPECT_GT(y_max, 60);
+  EXPECT_LT(y_max, 60 + 3.0);
+}
+
+TEST(RenderPdf, DrawsLinesWhereTheSheetSaysInMillimetres) {
+  if (!have("pdftoppm")) GTEST_SKIP() << "poppler-utils (pdftoppm) not installed";
+  const fs::path dir = foldkit::test::temp_dir("render");
+  render_sheets(two_sheets(), dir / "lines.pdf");
+  // 254 dpi = 10 pixels per millimetre.
+  const std::string out = run("pdftoppm -r 254 -gray -f 2 -l 2 -singlefile '" + (dir / "lines.pdf").string() +
+                              "' '" + (dir / "page2").string() + "'");
+  const Gray g = read_pgm(dir / "page2.pgm");
+  ASSERT_NEAR(g.width, 4200, 1) << out;  // poppler rounds page sizes up
+  ASSERT_NEAR(g.height, 2970, 1) << out;
+  EXPECT_LT(g.at_mm(20, 60, 10), 100) << "left cut edge at x = 20 mm";
+  EXPECT_LT(g.at_mm(60, 100, 10), 100) << "bottom cut edge at y = 100 mm";
+  EXPECT_LT(g.at_mm(12.5, 12.5, 10), 50) << "filled registration square";
+  EXPECT_GT(g.at_mm(103, 60, 10), 200) << "tab fill is light";
+  EXPECT_LT(g.at_mm(103, 60, 10), 250) << "tab fill is not white";
+  EXPECT_EQ(g.at_mm(60, 30, 10), 255) << "blank paper inside the piece";
+  EXPECT_EQ(g.at_mm(300, 200, 10), 255) << "blank paper outside";
+}
+
+TEST(RenderPdf, DrawsFoldLinesDashed) {
+  if (!have("pdftoppm")) GTEST_SKIP() << "poppler-utils (pdftoppm) not installed";
+  const fs::path dir = foldkit::test::temp_dir("render");
+  Sheet s;
+  s.size_mm = {100, 60};
+  s.paths.push_back({PathRole::Valley, {{10, 20}, {90, 20}}, false});
+  s.paths.push_back({PathRole::Mountain, {{10, 40}, {90, 40}}, false});
+  RenderOptions options;
+  options.valley.width_mm = options.mountain.width_mm = 0.5;
+  render_sheets({s}, dir / "dash.pdf", options);
+  run("pdftoppm -r 254 -gray -singlefile '" + (dir / "dash.pdf").string() + "' '" + (dir / "dash").string() +
+      "'");
+  const Gray g = read_pgm(dir / "dash.pgm");
+  ASSERT_NEAR(g.width, 1000, 1);
+  for (double y : {20.0, 40.0}) {
+    int ink = 0, paper = 0;
+    for (double x = 11; x < 89; x += 0.1)
+      (g.at_mm(x, y, 10) < 128 ? ink : paper)++;
+    EXPECT_GT(ink, 200) << "line at y=" << y << " is drawn";
+    EXPECT_GT(paper, 100) << "line at y=" << y << " has gaps";
+  }
+}
+
+TEST(RenderPng, WritesOneImagePerSheetSizedByTheResolution) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  RenderOptions options;
+  options.png_dpi = 50;
+  const auto written = render_sheets(two_sheets(), dir / "preview.png", options);
+  ASSERT_EQ(written, (std::vector<fs::path>{dir / "preview.png", dir / "preview-2.png"}));
+  const auto first = png_dimensions(written[0]), second = png_dimensions(written[1]);
+  EXPECT_EQ(first[0], static_cast<unsigned>(std::lround(210 / 25.4 * 50)));
+  EXPECT_EQ(first[1], static_cast<unsigned>(std::lround(297 / 25.4 * 50)));
+  EXPECT_EQ(second[0], static_cast<unsigned>(std::lround(420 / 25.4 * 50)));
+  EXPECT_EQ(second[1], first[1]);
+  EXPECT_EQ(count_entries(dir), 2);
+}
+
+TEST(RenderPng, PixelCountFollowsTheDpiOption) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  RenderOptions options;
+  options.png_dpi = 100;
+  render_sheets({sample_sheet({254, 127})}, dir / "sheet.png", options);
+  EXPECT_EQ(png_dimensions(dir / "sheet.png"), (std::array<unsigned, 2>{1000, 500}));
+}
+
+TEST(RenderSvg, HasOneGroupPerRoleAndMillimetreDimensions) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  const auto written = render_sheets(two_sheets(), dir / "layers.SVG");
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[1], dir / "layers-2.SVG");
+  const std::string svg = read_all(written[0]);
+  EXPECT_NE(svg.find("width=\"210mm\" height=\"297mm\" viewBox=\"0 0 210 297\""), std::string::npos);
+  EXPECT_NE(read_all(written[1]).find("width=\"420mm\" height=\"297mm\" viewBox=\"0 0 420 297\""),
+            std::string::npos);
+  for (const char* id : {"cut", "mountain", "valley", "tab", "label", "hint", "regmark"}) {
+    EXPECT_NE(svg.find("<g id=\"" + std::string(id) + "\""), std::string::npos) << id;
+  }
+  EXPECT_NE(svg.find("M20 20 L100 20 L100 100 L20 100 Z"), std::string::npos) << "cut outline in mm";
+  EXPECT_NE(svg.find(">17</text>"), std::string::npos);
+  EXPECT_NE(svg.find("3 &lt;&amp;&gt; &apos;q&apos;"), std::string::npos) << "text is escaped";
+  EXPECT_NE(svg.find("stroke-dasharray=\"2 1\""), std::string::npos) << "valley dashes";
+}
+
+TEST(RenderSvg, PutsEveryPathInTheGroupOfItsRole) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  render_sheets({sample_sheet({210, 297})}, dir / "roles.svg");
+  const std::string svg = read_all(dir / "roles.svg");
+  auto group = [&](const std::string& id) {
+    const auto start = svg.find("<g id=\"" + id + "\"");
+    return svg.substr(start, svg.find("\n  </g>", start) - start);
+  };
+  EXPECT_NE(group("valley").find("M20 20 L100 100\""), std::string::npos);
+  EXPECT_NE(group("mountain").find("M100 20 L20 100\""), std::string::npos);
+  EXPECT_NE(group("tab").find("M100 40 L106 44"), std::string::npos);
+  EXPECT_NE(group("regmark").find("M10 10 L15 10 L15 15 L10 15 Z\" fill=\"#000000\""), std::string::npos);
+  EXPECT_NE(group("label").find(">17</text>"), std::string::npos);
+  EXPECT_NE(group("hint").find("rotate("), std::string::npos);
+  EXPECT_EQ(group("cut").find("<text"), std::string::npos);
+}
+
+TEST(RenderSvg, IsWellFormedXml) {
+  if (!have("xmllint")) GTEST_SKIP() << "xmllint not installed";
+  const fs::path dir = foldkit::test::temp_dir("render");
+  render_sheets({sample_sheet({210, 297})}, dir / "xml.svg");
+  const std::string out = run("xmllint --noout '" + (dir / "xml.svg").string() + "' && echo OK");
+  EXPECT_EQ(out, "OK\n");
+}
+
+TEST(Render, AnUnknownExtensionIsAnOutputErrorAndWritesNothing) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  EXPECT_THROW(render_sheets(two_sheets(), dir / "model.docx"), OutputError);
+  EXPECT_THROW(render_sheets(two_sheets(), dir / "model"), OutputError);
+  EXPECT_EQ(count_entries(dir), 0);
+}
+
+TEST(Render, AMissingDirectoryIsAnOutputErrorNamingTheFile) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  const fs::path pdf = dir / "missing" / "model.pdf";
+  try {
+    render_sheets(two_sheets(), pdf);
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(pdf.string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(count_entries(dir), 0);
+}
+
+TEST(Render, AFailureOnALaterSheetLeavesNoFileOfTheRun) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  // The second sheet is too large for a PNG at this resolution, so the run fails after sheet 1 was drawn.
+  std::vector<Sheet> sheets = {sample_sheet({210, 297}), sample_sheet({20000, 297})};
+  RenderOptions options;
+  options.png_dpi = 100;
+  try {
+    render_sheets(sheets, dir / "big.png", options);
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("big-2.png"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(count_entries(dir), 0) << "neither big.png nor a temporary file remains";
+}
+
+TEST(Render, NoSheetsIsAnOutputError) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  EXPECT_THROW(render_sheets({}, dir / "empty.pdf"), OutputError);
+  EXPECT_EQ(count_entries(dir), 0);
+}
+
+TEST(Render, ReplacesAnExistingFile) {
+  if (!have("pdfinfo")) GTEST_SKIP() << "poppler-utils (pdfinfo) not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "again.pdf";
+  render_sheets(two_sheets(), pdf);
+  render_sheets({sample_sheet({148, 210})}, pdf);
+  EXPECT_NE(run("pdfinfo '" + pdf.string() + "'").find("Pages:           1"), std::string::npos);
+}
