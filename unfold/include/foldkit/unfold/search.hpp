@@ -1,0 +1,50 @@
+#pragma once
+// `--method search`: a tabu-style repair search on the cut tree (unfolding-notes.md, after Zawallich,
+// "Unfolding polyhedra via tabu search", 2024). Start from a spanning tree; while pieces overlap, cut
+// a tree edge on the path between two overlapping faces and re-attach the cut-off subtree through
+// another of its edges, keeping moves that do not raise the number of overlapping pairs.
+#include <cstdint>
+#include <vector>
+
+#include "foldkit/unfold/cut_tree.hpp"
+#include "foldkit/unfold/dual_graph.hpp"
+#include "foldkit/unfold/unfold.hpp"
+
+namespace foldkit::unfold {
+
+struct SearchOptions {
+  std::uint64_t seed = 1;
+  double time_limit_s = 60;
+  /// Candidate (cut, re-attach) moves evaluated per step; the best that does not add overlaps is kept.
+  int candidates_per_move = 6;
+  /// Moves without a new best overlap count before restarting from a freshly perturbed tree.
+  int restart_after = 1000;
+  /// Moves an edge stays tabu after being cut or folded.
+  int tabu_tenure = 12;
+  EdgeConstraints constraints;
+  /// Stage name reported to the progress callback.
+  std::string stage = "search";
+};
+
+struct SearchResult {
+  /// Cut flags (1 = cut) of an overlap-free unfolding: the search's tree when it reached zero
+  /// overlaps, else its best tree cut apart where it still overlapped (more pieces).
+  std::vector<char> cut;
+  bool solved = false;    ///< one piece per connected component, without overlaps
+  int overlaps_left = 0;  ///< overlapping pairs of the best tree when not solved
+  int moves = 0;          ///< accepted moves
+  int steps = 0;          ///< steps (each evaluates up to candidates_per_move moves)
+  int restarts = 0;
+};
+
+/// Runs the search from the fold forest `initial_fold` (pieces of one component are first stitched
+/// into one tree along their lightest edges). Deterministic for a given seed unless stopped by the
+/// time limit or by `progress` returning false.
+SearchResult search_unfold(const UnfoldContext& context, std::vector<char> initial_fold,
+                           const SearchOptions& options, const ProgressFn& progress = {});
+
+/// Stitches every pair of pieces of `tree` joined by a cut edge, lightest edges first, whatever the
+/// overlaps, until each connected component is one piece. Forced cuts are honoured.
+void join_all_pieces(CutTree& tree, const EdgeConstraints& constraints);
+
+}  // namespace foldkit::unfold
