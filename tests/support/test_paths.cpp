@@ -1,16 +1,24 @@
 #include "test_paths.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <random>
-#include <unistd.h>
+
+#include <fstream>
+#include <iterator>
 
 namespace foldkit::test {
 namespace fs = std::filesystem;
 
-fs::path source_dir() { return fs::path(FOLDKIT_SOURCE_DIR); }
+fs::path source_dir() {
+  return fs::path(FOLDKIT_SOURCE_DIR);
+}
 
-fs::path example_mesh(const std::string& name) { return source_dir() / "examples" / name; }
+fs::path example_mesh(const std::string& name) {
+  return source_dir() / "examples" / name;
+}
 
 std::optional<fs::path> shared_meshes() {
   fs::path p = fs::path(FOLDKIT_SHARED_DIR) / "meshes";
@@ -34,7 +42,9 @@ std::vector<fs::path> corpus_meshes(int max_faces) {
   return out;
 }
 
-fs::path foldkit_binary() { return fs::path(FOLDKIT_BINARY); }
+fs::path foldkit_binary() {
+  return fs::path(FOLDKIT_BINARY);
+}
 
 fs::path temp_dir(const std::string& tag) {
   static std::atomic<int> counter{0};
@@ -43,6 +53,47 @@ fs::path temp_dir(const std::string& tag) {
   fs::remove_all(p);
   fs::create_directories(p);
   return p;
+}
+
+namespace {
+std::string slurp_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+CliRun run_foldkit(const std::vector<std::string>& args) {
+  const fs::path dir = temp_dir("run_foldkit");
+  auto quote = [](const std::string& s) {
+    std::string q;
+    q.push_back('\'');
+    for (char ch : s) {
+      if (ch == '\'')
+        q.append("'\\''");
+      else
+        q.push_back(ch);
+    }
+    q.push_back('\'');
+    return q;
+  };
+  std::string cmd = quote(foldkit_binary().string());
+  for (const auto& a : args) {
+    cmd.push_back(' ');
+    cmd.append(quote(a));
+  }
+  cmd.append(" >");
+  cmd.append(quote((dir / "out").string()));
+  cmd.append(" 2>");
+  cmd.append(quote((dir / "err").string()));
+  cmd.append(" </dev/null");
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  r.signalled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) > 128);
+  r.out = slurp_file(dir / "out");
+  r.err = slurp_file(dir / "err");
+  fs::remove_all(dir);
+  return r;
 }
 
 }  // namespace foldkit::test

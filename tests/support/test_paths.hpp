@@ -13,11 +13,20 @@ std::filesystem::path source_dir();
 std::filesystem::path example_mesh(const std::string& name);
 /// ../shared/meshes when the corpus is present, else nullopt (tests then GTEST_SKIP with a message).
 std::optional<std::filesystem::path> shared_meshes();
-/// Corpus meshes (sorted by name) with at most `max_faces` faces, read from the file names; empty without corpus.
+/// Corpus meshes (sorted by name) with at most `max_faces` faces, read from the file names; empty without
+/// corpus.
 std::vector<std::filesystem::path> corpus_meshes(int max_faces);
 /// The built foldkit executable, for end-to-end tests of the CLI.
 std::filesystem::path foldkit_binary();
 /// A fresh empty directory under the system temp dir, unique per call.
 std::filesystem::path temp_dir(const std::string& tag);
 
+/// What a run of the foldkit executable produced.
+struct CliRun {
+  int exit_code = -1;
+  bool signalled = false;  ///< killed by a signal (a crash): never acceptable
+  std::string out, err;
+};
+/// Runs the built foldkit with `args` (no shell interpretation of their contents), capturing output.
+CliRun run_foldkit(const std::vector<std::string>& args);
 }  // namespace foldkit::test

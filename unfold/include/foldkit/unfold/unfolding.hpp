@@ -2,6 +2,7 @@
 // The result of unfolding: flat triangles grouped into pieces, plus per-edge fold information.
 // Self-contained, so layout/ needs nothing but this to draw pieces, folds and matching edges.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "foldkit/geom/predicates.hpp"
@@ -15,9 +16,9 @@ struct UnfoldEdge {
   /// The (one or two) faces and corners of the mesh edge; face[1] == -1 on a mesh boundary.
   std::array<int, 2> face{-1, -1};
   std::array<int, 2> corner{-1, -1};
-  bool cut = false;            ///< cut (outline) or fold; boundary edges are always cut
-  double fold_angle = 0;       ///< signed dihedral in radians: > 0 mountain, < 0 valley (see fold_angle())
-  double length = 0;           ///< model units
+  bool cut = false;       ///< cut (outline) or fold; boundary edges are always cut
+  double fold_angle = 0;  ///< signed dihedral in radians: > 0 mountain, < 0 valley (see fold_angle())
+  double length = 0;      ///< model units
   bool boundary() const { return face[1] < 0; }
   /// A cut edge with a partner on the other side: the two sides are glued together.
   bool glued_seam() const { return cut && !boundary(); }

@@ -1,0 +1,93 @@
+#include "foldkit/unfold/seams.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+#include "foldkit/error.hpp"
+
+namespace foldkit::unfold {
+namespace {
+
+std::string edge_name(const std::array<int, 2>& v) {
+  return std::to_string(v[0]) + "-" + std::to_string(v[1]);
+}
+
+}  // namespace
+
+std::vector<std::array<int, 2>> read_edge_list(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string(), "cannot open the edge list");
+  std::vector<std::array<int, 2>> edges;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    long long a = 0, b = 0;
+    std::string rest;
+    if (!(fields >> a)) {
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      throw InputError(path.string(), "line " + std::to_string(number) + ": expected two vertex indices");
+    }
+    if (!(fields >> b) || (fields >> rest))
+      throw InputError(path.string(), "line " + std::to_string(number) + ": expected two vertex indices");
+    if (a < 0 || b < 0 || a > 2'000'000'000 || b > 2'000'000'000)
+      throw InputError(path.string(), "line " + std::to_string(number) + ": vertex index out of range");
+    edges.push_back({static_cast<int>(a), static_cast<int>(b)});
+  }
+  if (in.bad()) throw InputError(path.string(), "read error");
+  return edges;
+}
+
+EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams) {
+  EdgeConstraints result;
+  if (seams.force_cut.empty() && seams.forbid_cut.empty()) return result;
+  std::unordered_map<long long, int> edge_of;
+  edge_of.reserve(mesh.edges.size() * 2);
+  auto key = [&](int a, int b) {
+    return static_cast<long long>(std::min(a, b)) * mesh.num_vertices() + std::max(a, b);
+  };
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    edge_of[key(mesh.edges[e].v[0], mesh.edges[e].v[1])] = e;
+  auto lookup = [&](const std::array<int, 2>& v, const char* option) {
+    auto it = v[0] < mesh.num_vertices() && v[1] < mesh.num_vertices() ? edge_of.find(key(v[0], v[1]))
+                                                                       : edge_of.end();
+    if (it == edge_of.end())
+      throw Error(std::string(option) + ": " + edge_name(v) + " is not an edge of " + mesh.name,
+                  ExitCode::Usage);
+    return it->second;
+  };
+  result.force_cut.assign(mesh.edges.size(), 0);
+  result.force_fold.assign(mesh.edges.size(), 0);
+  for (const auto& v : seams.force_cut)
+    result.force_cut[lookup(v, "--cut")] = 1;
+  std::vector<int> parent(mesh.num_faces());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& v : seams.forbid_cut) {
+    int e = lookup(v, "--keep");
+    if (result.force_cut[e])
+      throw Error("edge " + edge_name(v) + " is both in --cut and in --keep", ExitCode::Usage);
+    if (mesh.edges[e].boundary())
+      throw Error("--keep: " + edge_name(v) + " lies on the mesh boundary and cannot be folded",
+                  ExitCode::Usage);
+    if (result.force_fold[e]) continue;
+    int a = find(mesh.edges[e].face[0]), b = find(mesh.edges[e].face[1]);
+    if (a == b)
+      throw Error("--keep: edge " + edge_name(v) + " closes a loop of kept edges, which cannot lie flat",
+                  ExitCode::Usage);
+    parent[a] = b;
+    result.force_fold[e] = 1;
+  }
+  return result;
+}
+
+}  // namespace foldkit::unfold
