@@ -1,6 +1,138 @@
-// Placeholder until the owner of this subcommand lands it.
+// `foldkit make MESH -o model.pdf|svg|png`: load -> unfold -> lay out -> render, the main job.
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
 #include "commands.hpp"
+#include "foldkit/devices/render.hpp"
+#include "foldkit/error.hpp"
+#include "layout_options.hpp"
+#include "pipeline.hpp"
 
 namespace foldkit::cli {
-void setup_make(CLI::App& app) { app.add_subcommand("make", "(not yet available)"); }
+namespace {
+
+struct MakeArgs {
+  std::string mesh;
+  std::string output;
+  double dpi = 150;
+  bool json = false;
+  bool quiet = false;
+  std::string mountain = "dash-dot", valley = "dashed";
+  UnfoldCliOptions unfold;
+  LayoutCliOptions layout;
+};
+
+// Dash patterns (mm on, off, …) by name.
+const std::map<std::string, std::vector<double>>& fold_styles() {
+  static const std::map<std::string, std::vector<double>> styles = {
+      {"dash-dot", {2.5, 0.8, 0.4, 0.8}}, {"dashed", {2.0, 1.0}}, {"dotted", {0.4, 0.8}}, {"solid", {}}};
+  return styles;
+}
+
+nlohmann::json stats_json(const layout::SheetStats& s) {
+  return {{"coverage", s.coverage},
+          {"pieces", s.pieces},
+          {"tabs", s.tabs},
+          {"dropped_tabs", s.dropped_tabs},
+          {"labels", s.labels},
+          {"min_label_mm", s.min_label_mm},
+          {"piece_area_mm2", s.piece_area_mm2},
+          {"tab_area_mm2", s.tab_area_mm2}};
+}
+
+}  // namespace
+
+void setup_make(CLI::App& app) {
+  auto args = std::make_shared<MakeArgs>();
+  CLI::App* cmd = app.add_subcommand("make", "Unfold a mesh and lay it out on sheets: PDF, SVG or PNG");
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet)")
+      ->required()
+      ->check([](const std::string& path) -> std::string {
+        std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+        for (char& c : ext)
+          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return ext == ".pdf" || ext == ".svg" || ext == ".png" ? "" : "output must end in .pdf, .svg or .png";
+      });
+  cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
+      ->check(CLI::Range(10.0, 2400.0))
+      ->capture_default_str();
+  auto style_names = CLI::IsMember(fold_styles());
+  cmd->add_option("--mountain", args->mountain, "Mountain fold style: dash-dot, dashed, dotted, solid")
+      ->check(style_names)
+      ->capture_default_str();
+  cmd->add_option("--valley", args->valley, "Valley fold style: dash-dot, dashed, dotted, solid")
+      ->check(style_names)
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+  add_layout_options(*cmd, args->layout);
+  add_unfold_options(*cmd, args->unfold);
+  cmd->callback([args] {
+    finish_unfold_options(args->unfold);
+    const layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    ProgressLine line(!args->quiet);
+    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    const layout::LayoutResult& r = run.layout;
+
+    devices::RenderOptions render;
+    render.png_dpi = args->dpi;
+    render.mountain.dash_mm = fold_styles().at(args->mountain);
+    render.valley.dash_mm = fold_styles().at(args->valley);
+    line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
+    const auto files = devices::render_sheets(r.sheets, args->output, render);
+    line.clear();
+
+    const unfold::Unfolding& u = run.unfolded.result.unfolding;
+    std::vector<std::string> notes = run.unfolded.loaded.notes;
+    notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
+    notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+    if (args->json) {
+      nlohmann::json sheets = nlohmann::json::array();
+      for (const layout::SheetStats& s : r.sheet_stats)
+        sheets.push_back(stats_json(s));
+      nlohmann::json outputs = nlohmann::json::array();
+      for (const auto& f : files)
+        outputs.push_back(f.string());
+      nlohmann::json assembly = nlohmann::json::array();
+      for (const layout::AssemblyStep& step : r.assembly)
+        assembly.push_back(
+            {{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
+      nlohmann::json j{{"file", args->mesh},
+                       {"faces", u.num_faces()},
+                       {"pieces", u.piece_count},
+                       {"seams", u.seam_count()},
+                       {"method", run.unfolded.result.method},
+                       {"size_mm", r.size_mm},
+                       {"scale_mm_per_unit", r.scale_mm_per_unit},
+                       {"paper_mm", {layout_options.paper_mm.x, layout_options.paper_mm.y}},
+                       {"sheet_count", r.sheets.size()},
+                       {"sheets", sheets},
+                       {"overall", stats_json(r.overall)},
+                       {"unfold_seconds", run.unfolded.result.seconds},
+                       {"layout_seconds", run.layout_seconds},
+                       {"outputs", outputs},
+                       {"notes", notes}};
+      if (!r.assembly.empty()) j["assembly"] = assembly;
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    for (const auto& n : notes)
+      std::cerr << "note: " << n << "\n";
+    std::printf(
+        "%s: %d faces -> %d piece%s (%s) -> %zu sheet%s at %.0f mm, coverage %.0f%%, %d tabs (%d dropped) -> "
+        "%s%s\n",
+        args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",
+        run.unfolded.result.method.c_str(), r.sheets.size(), r.sheets.size() == 1 ? "" : "s", r.size_mm,
+        100 * r.overall.coverage, r.overall.tabs, r.overall.dropped_tabs, args->output.c_str(),
+        files.size() > 1 ? (" (+" + std::to_string(files.size() - 1) + " more)").c_str() : "");
+  });
+}
+
 }  // namespace foldkit::cli

@@ -1,9 +1,13 @@
 #pragma once
-// The layout stage: Unfolding -> sheets. Owned by layout/; extended by the layout issue.
+// The layout stage: Unfolding -> sheets. Scales the pieces, draws outlines and folds, adds glue tabs,
+// matching edge numbers, optional direction arrows and assembly hints, packs everything onto sheets
+// and adds registration marks. Built from the small modules beside this header.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "foldkit/layout/folds.hpp"
+#include "foldkit/layout/regmarks.hpp"
 #include "foldkit/sheet/sheet.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
@@ -14,18 +18,63 @@ struct LayoutOptions {
   std::optional<double> size_mm;
   /// Largest scale at which the whole model fits on one sheet.
   bool fit = false;
-  Vec2 paper_mm{210, 297};  ///< A4 portrait by default
+  Vec2 paper_mm{210, 297};  ///< A4 portrait by default (already turned to the wanted orientation)
   double margin_mm = 10;
   /// Folds whose |angle| is below this (radians) are not drawn.
   double flat_fold_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  /// Fold lines stop this far short of their vertices.
+  double fold_inset_mm = 0.6;
+
+  bool tabs = true;             ///< one glue tab per seam pair
+  double tab_width_mm = 5;      ///< full tab width; narrower on short edges and in tight spots
+  double min_tab_width_mm = 2;  ///< narrower than this a tab is useless: it moves or is dropped
+
+  bool numbers = true;        ///< matching edge numbers
+  double label_min_mm = 1.8;  ///< smallest legible label (cap height)
+  double label_max_mm = 3.5;  ///< largest label
+  bool arrows = false;        ///< coloured direction arrows per seam pair (seed Figure 1(c))
+  bool hints = false;         ///< assembly step beside each number and an assembly-order list
+
+  bool regmarks = false;  ///< Silhouette registration marks for print-and-cut
+  RegMarkOptions regmark;
+
+  double spacing_mm = 2;      ///< least gap between pieces (with tabs) on a sheet
+  int rotations = 8;          ///< evenly spaced rotations tried per piece when packing
+  double pack_cell_mm = 0.5;  ///< packing raster resolution
+};
+
+/// Figures for one sheet, or the whole layout.
+struct SheetStats {
+  double coverage = 0;  ///< area of pieces and tabs over the printable area (0..1)
+  double piece_area_mm2 = 0, tab_area_mm2 = 0;
+  int pieces = 0, tabs = 0, dropped_tabs = 0, labels = 0;
+  double min_label_mm = 0;  ///< smallest label cap height (0 when there is none)
+};
+
+/// One step of the assembly order: glue seam pair `number` (as printed) at step `step` (1-based).
+struct AssemblyStep {
+  int step = 0;
+  int number = 0;
+  double fold_angle_rad = 0;  ///< dihedral of the seam: sharp seams come first
 };
 
 struct LayoutResult {
   std::vector<Sheet> sheets;
   double scale_mm_per_unit = 1;  ///< model units -> mm
+  double size_mm = 0;            ///< the model's largest dimension on paper
+  std::vector<SheetStats> sheet_stats;
+  SheetStats overall;
+  std::vector<AssemblyStep> assembly;  ///< filled when hints are on
+  std::vector<std::string> notes;      ///< e.g. which tabs were dropped and why
+  /// Per mesh edge, the number printed on both sides of a glued seam (0 for other edges).
+  std::vector<int> seam_number;
 };
 
-/// Scales, places and draws every piece. Throws LayoutError when a piece cannot fit a sheet.
+/// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).
+Box2 printable_area(const LayoutOptions& options);
+
+/// Scales, places and draws every piece. Throws LayoutError when the options are unusable or a piece
+/// cannot fit a sheet at the asked size (the message names the largest --size that fits).
 LayoutResult layout_sheets(const unfold::Unfolding& unfolding, const LayoutOptions& options);
 
 }  // namespace foldkit::layout

@@ -31,6 +31,9 @@ struct Path {
   bool closed = false;
   int piece = -1;      ///< piece index, -1 when the path belongs to no piece (marks, hints)
   bool filled = false; ///< drawn filled (registration square); cutters ignore fills
+  /// Paths that must be told apart within a role (the direction arrows of seam pairs) carry an index
+  /// into the renderer's palette of distinguishable colours; -1 draws the role's own colour.
+  int tint = -1;
 };
 
 /// A text on the sheet. `at_mm` is the left end of the baseline; the text runs along `angle_rad`

@@ -1,0 +1,67 @@
+#include "layout_options.hpp"
+
+#include "foldkit/layout/paper.hpp"
+
+namespace foldkit::cli {
+
+void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
+  auto length = [](const std::string& text) -> std::string {
+    return layout::parse_length_mm(text) ? "" : "expected a positive length such as 150mm, 15cm or 6in";
+  };
+  auto paper = [](const std::string& text) -> std::string {
+    return layout::parse_paper(text) ? "" : "unknown paper '" + text + "': use " + layout::paper_names();
+  };
+  auto* size =
+      cmd.add_option("--size", o.size, "Largest model dimension on paper, e.g. 150mm (default: --fit)")
+          ->check(length);
+  cmd.add_flag("--fit", o.fit, "Largest size at which the model fits on one sheet")->excludes(size);
+  cmd.add_option("--paper", o.paper, "Paper: " + layout::paper_names())->check(paper)->capture_default_str();
+  cmd.add_flag("--landscape", o.landscape, "Landscape sheets (default portrait)");
+  cmd.add_option("--margin", o.margin_mm, "Margin around the printable area, mm")
+      ->check(CLI::Range(0.0, 200.0))
+      ->capture_default_str();
+  cmd.add_option("--tab-width", o.tab_width_mm, "Glue tab width, mm (narrower on short edges)")
+      ->check(CLI::Range(0.5, 50.0))
+      ->capture_default_str();
+  cmd.add_flag("--no-tabs", o.no_tabs, "No glue tabs");
+  cmd.add_flag("--no-numbers", o.no_numbers, "No matching edge numbers");
+  cmd.add_flag("--arrows", o.arrows, "Coloured direction arrows on both sides of each seam");
+  cmd.add_flag("--hints", o.hints, "Assembly step beside each edge number and a glue-order list");
+  cmd.add_flag("--regmarks", o.regmarks, "Silhouette registration marks for print-and-cut");
+  cmd.add_option("--regmark-inset", o.regmark_inset_mm, "Distance of the marks from the paper edges, mm")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  cmd.add_option("--regmark-square", o.regmark_square_mm, "Side of the square mark, mm")
+      ->check(CLI::Range(1.0, 50.0))
+      ->capture_default_str();
+  cmd.add_option("--regmark-arm", o.regmark_arm_mm, "Arm length of the L marks, mm")
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
+  cmd.add_option("--spacing", o.spacing_mm, "Least gap between pieces, mm")
+      ->check(CLI::Range(0.0, 50.0))
+      ->capture_default_str();
+}
+
+layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
+  layout::LayoutOptions out;
+  // Both were validated when parsing.
+  if (!o.size.empty() && !o.fit) out.size_mm = layout::parse_length_mm(o.size);
+  out.fit = o.fit || o.size.empty();
+  out.paper_mm =
+      layout::oriented(layout::parse_paper(o.paper).value_or(Vec2{210, 297}),
+                       o.landscape ? layout::Orientation::Landscape : layout::Orientation::Portrait);
+  out.margin_mm = o.margin_mm;
+  out.tabs = !o.no_tabs;
+  out.tab_width_mm = o.tab_width_mm;
+  out.numbers = !o.no_numbers;
+  out.arrows = o.arrows;
+  out.hints = o.hints;
+  out.regmarks = o.regmarks;
+  out.regmark.inset_mm = o.regmark_inset_mm;
+  out.regmark.square_mm = o.regmark_square_mm;
+  out.regmark.arm_mm = o.regmark_arm_mm;
+  out.spacing_mm = o.spacing_mm;
+  return out;
+}
+
+}  // namespace foldkit::cli

@@ -1,0 +1,38 @@
+#pragma once
+// The layout options every command that lays out sheets shares (make, cut): paper, scale, margins,
+// tabs, numbers, arrows, hints and registration marks.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "foldkit/layout/layout.hpp"
+
+namespace foldkit::cli {
+
+struct LayoutCliOptions {
+  std::string size;  ///< "150mm", "6in", … (empty: --fit)
+  bool fit = false;
+  std::string paper = "A4";
+  bool landscape = false;
+  double margin_mm = 10;
+  double tab_width_mm = 5;
+  bool no_tabs = false;
+  bool no_numbers = false;
+  bool arrows = false;
+  bool hints = false;
+  bool regmarks = false;
+  double regmark_inset_mm = 10;
+  double regmark_square_mm = 5;
+  double regmark_arm_mm = 20;
+  double spacing_mm = 2;
+};
+
+/// Adds --size, --fit, --paper, --landscape, --margin, --tab-width, --no-tabs, --no-numbers, --arrows,
+/// --hints, --regmarks (with --regmark-inset/-square/-arm) and --spacing to `cmd`. Malformed values
+/// (unknown paper, non-positive size) are usage errors at parse time.
+void add_layout_options(CLI::App& cmd, LayoutCliOptions& options);
+
+/// The library options for the parsed command line.
+layout::LayoutOptions to_layout_options(const LayoutCliOptions& options);
+
+}  // namespace foldkit::cli

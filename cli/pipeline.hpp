@@ -1,0 +1,22 @@
+#pragma once
+// load -> unfold -> lay out: the part `foldkit make` and `foldkit cut` share.
+#include <string>
+
+#include "foldkit/layout/layout.hpp"
+#include "progress.hpp"
+#include "unfold_options.hpp"
+
+namespace foldkit::cli {
+
+struct PipelineRun {
+  UnfoldRun unfolded;
+  layout::LayoutResult layout;
+  double layout_seconds = 0;
+};
+
+/// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`.
+/// Throws InputError (mesh), LayoutError (does not fit) or Error.
+PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
+                               const layout::LayoutOptions& layout_options, ProgressLine& line);
+
+}  // namespace foldkit::cli

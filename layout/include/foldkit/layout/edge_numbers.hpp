@@ -1,0 +1,59 @@
+#pragma once
+// Matching edge numbers: every seam pair gets a unique number, written on both of its sides: inside
+// the piece along the edge, or on the tab when the side has one. Labels are sized to their edge
+// (never below a legible minimum), keep clear of outline and fold lines and of each other, and read
+// with their foot towards the edge they name.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "foldkit/layout/folds.hpp"
+#include "foldkit/layout/outline.hpp"
+#include "foldkit/layout/polygon.hpp"
+#include "foldkit/layout/tabs.hpp"
+
+namespace foldkit::layout {
+
+struct LabelOptions {
+  double min_mm = 1.8;  ///< smallest cap height
+  double max_mm = 3.5;  ///< largest cap height
+  /// Cap height as a fraction of the edge length before the limits apply.
+  double per_length = 0.3;
+  /// Advance of one digit as a fraction of the cap height (sans-serif and Hershey digits both fit).
+  double char_width = 0.72;
+  double gap_mm = 0.5;         ///< between the edge and the label's foot
+  double clearance_mm = 0.25;  ///< least distance from other lines and labels
+};
+
+/// A label in its piece's frame (mm, y up): text from `at_mm` along `dir`, glyphs growing towards
+/// perp_ccw(dir).
+struct Label {
+  int seam = -1;
+  int side = 0;
+  int piece = -1;
+  std::string text;
+  Vec2 at_mm;
+  Vec2 dir{1, 0};
+  double height_mm = 0;
+  bool on_tab = false;
+  bool crowded = false;  ///< no clear spot: placed at the minimum size on the edge's middle anyway
+  /// Text drawn just after the number in the hint role (the assembly step), "" for none.
+  std::string hint;
+  Polygon box_mm;  ///< the area the label (with its hint) covers
+};
+
+/// Numbers seams 1..N in outline order: piece by piece along each outline, so that the numbers of
+/// neighbouring edges are close. Returns number per seam.
+std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams);
+
+/// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
+/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines.
+std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                std::span<const int> numbers, const TabPlan& tabs,
+                                std::span<const std::vector<FoldLine>> fold_lines,
+                                std::span<const std::string> hints, const LabelOptions& options);
+
+/// Length of `text` on the page at cap height `height_mm` under `options.char_width`.
+double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options);
+
+}  // namespace foldkit::layout

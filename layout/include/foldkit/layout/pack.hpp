@@ -1,0 +1,52 @@
+#pragma once
+// Packing piece outlines (with their tabs) onto sheets: bottom-left fill ("top-left" on the page) of
+// rasterised, rotated shapes. Each item is tried at several rotations on every open sheet; the first
+// sheet where it fits takes it at the highest, then leftmost, free position; when none has room a new
+// sheet is opened. Shapes are rasterised conservatively (every cell the grown shape touches is taken),
+// so placed items never overlap and keep at least `spacing_mm` apart, and concave pieces can nest
+// into each other's bays and holes.
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "foldkit/layout/polygon.hpp"
+
+namespace foldkit::layout {
+
+/// What to pack: a set of polygons (non-zero fill) in the item's own frame, mm, y up.
+struct PackItem {
+  std::vector<Polygon> shape_mm;
+  /// Rotations worth trying besides the evenly spaced ones (e.g. the one that fits the sheet best).
+  std::vector<double> extra_angles_rad;
+  bool rotate = true;  ///< false: only the item's own orientation (blocks of text)
+};
+
+struct PackOptions {
+  Box2 area_mm{{0, 0}, {190, 277}};  ///< where items may go, sheet frame (mm, y up)
+  std::vector<Box2> keep_out_mm;     ///< regions nothing may come within spacing_mm of
+  double spacing_mm = 2;             ///< least gap between two items
+  double cell_mm = 0.5;              ///< raster resolution: smaller packs tighter, costs more time
+  int rotations = 8;                 ///< evenly spaced rotations tried (4: multiples of 90 degrees)
+  /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
+  std::optional<int> max_sheets;
+};
+
+/// Where an item went: sheet index and the motion from the item's frame to the sheet frame.
+struct PackPlacement {
+  int sheet = -1;  ///< -1 when unplaced
+  Rigid2 transform;
+};
+
+struct PackResult {
+  std::vector<PackPlacement> placements;  ///< one per item, in input order
+  int sheet_count = 0;
+  std::vector<int> unplaced;  ///< items that fit no sheet (too large, or max_sheets reached)
+};
+
+/// Packs `items` (largest first) onto as few sheets as the heuristic finds.
+PackResult pack_items(std::span<const PackItem> items, const PackOptions& options);
+
+/// The rotation (radians) that makes the points' axis-aligned bounding box smallest in area.
+double min_area_rect_angle(std::span<const Vec2> points);
+
+}  // namespace foldkit::layout

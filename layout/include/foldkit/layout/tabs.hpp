@@ -1,0 +1,48 @@
+#pragma once
+// Glue tabs: one trapezoid per seam pair, on one side only. Each tab's slanted ends take at most half
+// of the free angle at its corners, so it keeps clear of the neighbouring edges and of a neighbour's
+// tab even at sharp reflex corners; short edges get narrower tabs. A tab that would overlap its own
+// piece or one of the piece's tabs is narrowed, then moved to the partner edge, and dropped only when
+// neither side has room even at the minimum width. Other pieces are kept apart by packing, which
+// treats a piece and its tabs as one shape.
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "foldkit/layout/outline.hpp"
+#include "foldkit/layout/polygon.hpp"
+
+namespace foldkit::layout {
+
+struct TabOptions {
+  double width_mm = 5;      ///< full width, from the edge to the tab's outer side
+  double min_width_mm = 2;  ///< narrower tabs are not worth gluing: try the other side or drop
+  double max_slant_rad = 0.25 * 3.14159265358979323846;  ///< angle between edge and slanted end at most
+  /// Tabs are at most this fraction of their edge's length wide, so short edges get narrow tabs.
+  double width_per_length = 0.45;
+};
+
+/// A placed tab, in its piece's frame (mm, y up).
+struct Tab {
+  int seam = -1;  ///< index into the seam list
+  int side = 0;   ///< which side of the seam carries it (Seam::sides[side])
+  int piece = -1;
+  Polygon quad_mm;  ///< counter-clockwise: edge start, outer start, outer end, edge end
+  double width_mm = 0;
+};
+
+struct TabPlan {
+  std::vector<std::optional<Tab>> tab_of_seam;  ///< per seam, its tab or nullopt when dropped
+  std::vector<int> dropped;                     ///< seams without a tab
+};
+
+/// Tabs for `seams` (processed in the order of `order`, or seam order when empty).
+TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
+                  std::span<const int> order = {});
+
+/// The trapezoid on the outer side of outline edge a->b (piece on the left) of width w with slanted
+/// ends at angles slant_a, slant_b from the edge; narrowed so that its outer side stays positive.
+Polygon tab_trapezoid(Vec2 a, Vec2 b, double width_mm, double slant_a_rad, double slant_b_rad);
+
+}  // namespace foldkit::layout

@@ -1,0 +1,179 @@
+#include "foldkit/layout/edge_numbers.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace foldkit::layout {
+namespace {
+
+struct Segment {
+  Vec2 a, b;
+  Box2 box;
+};
+
+// What a label in one piece must keep clear of.
+struct PieceObstacles {
+  std::vector<Segment> lines;
+  std::vector<Polygon> labels;
+  std::vector<Box2> label_boxes;
+};
+
+Box2 grown(Box2 b, double d) {
+  return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
+}
+
+Polygon label_box(Vec2 at, Vec2 dir, double width, double height) {
+  const Vec2 up = perp_ccw(dir);
+  return {at, at + dir * width, at + dir * width + up * height, at + up * height};
+}
+
+}  // namespace
+
+double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options) {
+  return static_cast<double>(text.size()) * options.char_width * height_mm;
+}
+
+std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams) {
+  std::vector<int> seam_at_edge;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
+    if (seams[s].edge >= static_cast<int>(seam_at_edge.size())) seam_at_edge.resize(seams[s].edge + 1, -1);
+    seam_at_edge[seams[s].edge] = static_cast<int>(s);
+  }
+  std::vector<int> number(seams.size(), 0);
+  int next = 1;
+  for (const ScaledPiece& piece : pieces)
+    for (const OutlineLoop& loop : piece.outline_mm)
+      for (const OutlineEdge& e : loop) {
+        if (e.edge >= static_cast<int>(seam_at_edge.size())) continue;
+        const int s = seam_at_edge[e.edge];
+        if (s >= 0 && number[s] == 0) number[s] = next++;
+      }
+  // Seams missing from every outline cannot happen for a valid unfolding; number them anyway.
+  for (int& n : number)
+    if (n == 0) n = next++;
+  return number;
+}
+
+std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                std::span<const int> numbers, const TabPlan& tabs,
+                                std::span<const std::vector<FoldLine>> fold_lines,
+                                std::span<const std::string> hints, const LabelOptions& o) {
+  std::vector<PieceObstacles> obstacles(pieces.size());
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    auto add = [&](Vec2 a, Vec2 b) {
+      Box2 box;
+      box.add(a);
+      box.add(b);
+      obstacles[p].lines.push_back({a, b, box});
+    };
+    for (const OutlineLoop& loop : pieces[p].outline_mm)
+      for (const OutlineEdge& e : loop)
+        add(e.a, e.b);
+    if (p < fold_lines.size())
+      for (const FoldLine& f : fold_lines[p])
+        add(f.a, f.b);
+  }
+
+  auto clear_of_everything = [&](int p, const Polygon& box) {
+    const Box2 reach = grown(bounds_of(box), o.clearance_mm);
+    for (const Segment& s : obstacles[p].lines) {
+      if (!reach.overlaps(s.box)) continue;
+      const std::array<Vec2, 2> seg{s.a, s.b};
+      if (convex_overlap(box, seg, -o.clearance_mm)) return false;
+    }
+    for (std::size_t k = 0; k < obstacles[p].labels.size(); ++k)
+      if (reach.overlaps(obstacles[p].label_boxes[k]) &&
+          convex_overlap(box, obstacles[p].labels[k], -o.clearance_mm))
+        return false;
+    return true;
+  };
+  auto inside_piece = [&](int p, Vec2 point) {
+    for (const Triangle2& t : pieces[p].triangles_mm)
+      if (inside_convex(t, point, 0)) return true;
+    return false;
+  };
+
+  std::vector<Label> labels;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
+    const std::string text = std::to_string(numbers[s]);
+    const std::string hint = s < hints.size() ? hints[s] : std::string();
+    for (int k = 0; k < 2; ++k) {
+      const SeamSide& side = seams[s].sides[k];
+      if (side.piece < 0) continue;
+      const OutlineEdge& e = pieces[side.piece].outline_mm[side.loop][side.index];
+      const double length = norm(e.b - e.a);
+      if (length <= 0) continue;
+      Label label;
+      label.seam = static_cast<int>(s);
+      label.side = k;
+      label.piece = side.piece;
+      label.text = text;
+      label.hint = hint;
+      auto full_width = [&](double h) {
+        double w = label_width_mm(text, h, o);
+        if (!hint.empty()) w += 0.3 * h + label_width_mm(hint, 0.75 * h, o);
+        return w;
+      };
+      const double preferred = std::clamp(o.per_length * length, o.min_mm, o.max_mm);
+      // Largest first: a label as big as its edge allows is the easiest to find.
+      std::vector<double> heights;
+      for (double h = preferred; h > o.min_mm + 1e-9; h *= 0.85)
+        heights.push_back(h);
+      heights.push_back(o.min_mm);
+      bool placed = false;
+
+      const auto& tab = tabs.tab_of_seam.size() > s ? tabs.tab_of_seam[s] : std::nullopt;
+      if (tab && tab->side == k) {
+        // On the tab: read from the outside, foot on the edge.
+        const Vec2 dir = normalized(e.a - e.b);
+        const Vec2 mid = 0.5 * (e.a + e.b);
+        const double tallest = tab->width_mm - o.gap_mm - o.clearance_mm;
+        for (double h : heights) {
+          if (h > tallest || placed) continue;
+          const double w = full_width(h);
+          const Vec2 at = mid - dir * (0.5 * w) + perp_ccw(dir) * o.gap_mm;
+          Polygon box = label_box(at, dir, w, h);
+          bool inside = true;
+          for (Vec2 c : box)
+            inside = inside && inside_convex(tab->quad_mm, c, o.clearance_mm * 0.5);
+          if (!inside) continue;
+          label = Label{label.seam, k, side.piece, text, at, dir, h, true, false, hint, box};
+          placed = true;
+        }
+      }
+      if (!placed) {
+        const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
+        static constexpr std::array<double, 7> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8};
+        for (double h : heights) {
+          if (placed) break;
+          const double w = full_width(h);
+          for (double lift : {o.gap_mm, o.gap_mm + 0.4 * h}) {
+            for (double t : kAlong) {
+              const Vec2 at = e.a + dir * (t * length - 0.5 * w) + up * lift;
+              Polygon box = label_box(at, dir, w, h);
+              const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
+              if (!inside_piece(side.piece, centre) || !clear_of_everything(side.piece, box)) continue;
+              label = Label{label.seam, k, side.piece, text, at, dir, h, false, false, hint, box};
+              placed = true;
+              break;
+            }
+            if (placed) break;
+          }
+        }
+        if (!placed) {
+          const double h = o.min_mm, w = full_width(h);
+          const Vec2 at = 0.5 * (e.a + e.b) - dir * (0.5 * w) + up * o.gap_mm;
+          label =
+              Label{label.seam, k, side.piece, text, at, dir, h, false, true, hint, label_box(at, dir, w, h)};
+        }
+      }
+      obstacles[side.piece].labels.push_back(label.box_mm);
+      obstacles[side.piece].label_boxes.push_back(bounds_of(label.box_mm));
+      labels.push_back(std::move(label));
+    }
+  }
+  return labels;
+}
+
+}  // namespace foldkit::layout

@@ -1,0 +1,441 @@
+#include "foldkit/layout/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "foldkit/error.hpp"
+#include "foldkit/layout/arrows.hpp"
+#include "foldkit/layout/edge_numbers.hpp"
+#include "foldkit/layout/hints.hpp"
+#include "foldkit/layout/outline.hpp"
+#include "foldkit/layout/pack.hpp"
+#include "foldkit/layout/scale.hpp"
+#include "foldkit/layout/tabs.hpp"
+
+namespace foldkit::layout {
+namespace {
+
+std::string format_mm(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", v);
+  return buf;
+}
+
+void validate(const LayoutOptions& o) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (!positive(o.paper_mm.x) || !positive(o.paper_mm.y)) throw LayoutError("paper size must be positive");
+  if (!(std::isfinite(o.margin_mm) && o.margin_mm >= 0)) throw LayoutError("margin must be zero or positive");
+  if (o.size_mm && !positive(*o.size_mm)) throw LayoutError("--size must be positive");
+  if (o.tabs && (!positive(o.tab_width_mm) || !positive(o.min_tab_width_mm)))
+    throw LayoutError("tab width must be positive");
+  if (!positive(o.label_min_mm) || o.label_max_mm < o.label_min_mm) throw LayoutError("bad label sizes");
+  if (!(o.spacing_mm >= 0) || !positive(o.pack_cell_mm)) throw LayoutError("bad packing spacing");
+  const Box2 area = printable_area(o);
+  if (area.empty() || area.width() < 10 || area.height() < 10)
+    throw LayoutError("the margins leave no printable area on a " + format_mm(o.paper_mm.x) + "x" +
+                      format_mm(o.paper_mm.y) + " mm sheet");
+}
+
+// Sheet frame (y down, from the top-left) <-> packing frame (y up, from the bottom-left).
+Box2 flip_box(const Box2& b, double paper_h) {
+  return Box2{{b.min.x, paper_h - b.max.y}, {b.max.x, paper_h - b.min.y}};
+}
+
+// Everything drawn for one piece, in the piece's frame (mm, y up), before packing.
+struct Draft {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+  std::vector<int> numbers;
+  std::vector<int> order;  // assembly order (seam indices), empty without hints
+  std::vector<std::vector<FoldLine>> folds;
+  TabPlan tabs;
+  std::vector<Label> labels;
+  std::vector<Arrow> arrows;
+};
+
+Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
+  Draft d;
+  d.pieces = scaled_pieces(u, scale);
+  d.seams = find_seams(u, d.pieces);
+  d.numbers = number_seams(d.pieces, d.seams);
+  if (o.hints) d.order = assembly_order(seam_loops(d.pieces, d.seams), d.seams);
+  FoldOptions fold_options{o.flat_fold_rad, o.fold_inset_mm};
+  for (const ScaledPiece& p : d.pieces)
+    d.folds.push_back(fold_lines(u, p, fold_options));
+
+  // Tabs in number order: numbers follow the outlines, so alternation works along each outline.
+  std::vector<int> by_number(d.seams.size());
+  std::iota(by_number.begin(), by_number.end(), 0);
+  std::sort(by_number.begin(), by_number.end(), [&](int a, int b) { return d.numbers[a] < d.numbers[b]; });
+  if (o.tabs) {
+    TabOptions tab_options;
+    tab_options.width_mm = o.tab_width_mm;
+    tab_options.min_width_mm = std::min(o.min_tab_width_mm, o.tab_width_mm);
+    d.tabs = plan_tabs(d.pieces, d.seams, tab_options, by_number);
+  } else {
+    d.tabs.tab_of_seam.resize(d.seams.size());
+  }
+  if (o.arrows) d.arrows = seam_arrows(d.pieces, d.seams);
+
+  if (o.numbers) {
+    std::vector<std::vector<FoldLine>> avoid = d.folds;
+    for (const Arrow& a : d.arrows)
+      avoid[a.piece].push_back({PathRole::Hint, a.tail_mm, a.tip_mm, -1});
+    std::vector<std::string> hints;
+    if (o.hints) {
+      hints.resize(d.seams.size());
+      for (std::size_t step = 0; step < d.order.size(); ++step) {
+        // Appending piecewise: GCC 12 warns (-Wrestrict, a known false positive) on "(" + s + ")".
+        std::string& hint = hints[d.order[step]];
+        hint = std::to_string(step + 1);
+        hint.insert(hint.begin(), '(');
+        hint.push_back(')');
+      }
+    }
+    LabelOptions label_options;
+    label_options.min_mm = o.label_min_mm;
+    label_options.max_mm = o.label_max_mm;
+    // Arrows sit along the edges: lift the labels above them.
+    if (o.arrows) label_options.gap_mm = 1.6;
+    d.labels = place_labels(d.pieces, d.seams, d.numbers, d.tabs, avoid, hints, label_options);
+  }
+  return d;
+}
+
+// The shape packing keeps apart: each piece with its tabs.
+std::vector<PackItem> pack_items_of(const Draft& d, Vec2 area_size) {
+  std::vector<PackItem> items(d.pieces.size());
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    std::vector<Polygon> parts;
+    for (const Triangle2& t : d.pieces[p].triangles_mm)
+      parts.push_back({t[0], t[1], t[2]});
+    for (const auto& tab : d.tabs.tab_of_seam)
+      if (tab && tab->piece == static_cast<int>(p)) parts.push_back(tab->quad_mm);
+    items[p].shape_mm = polygon_union(parts);
+    std::vector<Vec2> points;
+    for (const Polygon& poly : items[p].shape_mm)
+      points.insert(points.end(), poly.begin(), poly.end());
+    items[p].extra_angles_rad.push_back(best_fit_angle(points, area_size));
+  }
+  return items;
+}
+
+// The largest --size at which every piece (with room for tabs) fits the printable area.
+double largest_fitting_size(const unfold::Unfolding& u, const LayoutOptions& o, double cell_slack) {
+  const Box2 area = printable_area(o);
+  const double border = (o.tabs ? o.tab_width_mm : 0) + o.spacing_mm + cell_slack;
+  const Vec2 room{area.width() - 2 * border, area.height() - 2 * border};
+  double scale = 1e300;
+  for (const ScaledPiece& piece : scaled_pieces(u, 1.0)) {
+    std::vector<Vec2> points;
+    for (const Triangle2& t : piece.triangles_mm)
+      points.insert(points.end(), t.begin(), t.end());
+    scale = std::min(scale, max_fit_scale(points, room));
+  }
+  return scale * u.model_extent;
+}
+
+Vec2 to_sheet(Vec2 p, const Rigid2& t, double paper_h) {
+  Vec2 q = t.apply(p);
+  return {q.x, paper_h - q.y};
+}
+
+Text make_text(const std::string& s, Vec2 at, Vec2 dir, double h, PathRole role, int piece, const Rigid2& t,
+               double paper_h) {
+  const Vec2 d = t.apply_dir(dir);
+  // y flips, so the direction's angle on the page (clockwise positive) is atan2(-d.y, d.x).
+  return Text{s, to_sheet(at, t, paper_h), h, std::atan2(-d.y, d.x), role, piece};
+}
+
+// The assembly-order list as text blocks (sheet frame is applied later), each at most `max_h` tall.
+struct ListBlock {
+  std::vector<std::string> lines;
+  Vec2 size_mm;
+};
+
+std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
+  constexpr double kLine = 3.6, kColumn = 16;
+  std::vector<std::string> entries;
+  for (std::size_t step = 0; step < d.order.size(); ++step)
+    entries.push_back(std::to_string(step + 1) + ". " + std::to_string(d.numbers[d.order[step]]));
+  std::vector<ListBlock> blocks;
+  const int columns = std::max(1, static_cast<int>((area_size.x - 4) / kColumn));
+  const int rows_max = std::max(4, static_cast<int>((area_size.y - 4) / kLine) - 2);
+  std::size_t at = 0;
+  while (at < entries.size()) {
+    ListBlock block;
+    block.lines.push_back(blocks.empty() ? "Glue in this order (step. seam):" : "Glue order, continued:");
+    const std::size_t left = entries.size() - at;
+    const int cols = static_cast<int>(std::min<std::size_t>(columns, (left + 9) / 10));
+    const int rows = static_cast<int>(std::min<std::size_t>(rows_max, (left + cols - 1) / cols));
+    for (int r = 0; r < rows; ++r) {
+      std::string line;
+      for (int c = 0; c < cols; ++c) {
+        const std::size_t i = at + static_cast<std::size_t>(c) * rows + r;
+        if (i >= entries.size() || i >= at + static_cast<std::size_t>(rows) * cols) continue;
+        std::string cell = entries[i];
+        cell.resize(std::max<std::size_t>(cell.size(), 9), ' ');
+        line += cell;
+      }
+      block.lines.push_back(line);
+    }
+    const double width = std::max(cols * kColumn, 60.0);
+    block.size_mm = {width, (rows + 1) * kLine + 1};
+    at += static_cast<std::size_t>(rows) * cols;
+    blocks.push_back(std::move(block));
+  }
+  return blocks;
+}
+
+struct Attempt {
+  LayoutResult result;
+  bool complete = false;
+};
+
+Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
+              std::optional<int> max_sheets) {
+  Attempt attempt;
+  LayoutResult& r = attempt.result;
+  r.scale_mm_per_unit = scale;
+  r.size_mm = scale * u.model_extent;
+  const double paper_h = o.paper_mm.y;
+  const Box2 area_down = printable_area(o);
+  const Box2 area = flip_box(area_down, paper_h);
+  const Vec2 area_size{area.width(), area.height()};
+
+  Draft d = draw_pieces(u, o, scale);
+  std::vector<PackItem> items = pack_items_of(d, area_size);
+  const std::size_t piece_items = items.size();
+  std::vector<ListBlock> blocks;
+  if (o.hints) {
+    blocks = assembly_blocks(d, area_size);
+    for (const ListBlock& b : blocks) {
+      PackItem item;
+      item.rotate = false;  // text reads upright
+      item.shape_mm = {{{0, 0}, {b.size_mm.x, 0}, b.size_mm, {0, b.size_mm.y}}};
+      items.push_back(std::move(item));
+    }
+  }
+
+  PackOptions pack_options;
+  pack_options.area_mm = area;
+  pack_options.spacing_mm = o.spacing_mm;
+  pack_options.cell_mm = o.pack_cell_mm;
+  pack_options.rotations = o.rotations;
+  pack_options.max_sheets = max_sheets;
+  if (o.regmarks)
+    for (const Box2& b : regmark_keep_out(o.paper_mm, o.regmark))
+      pack_options.keep_out_mm.push_back(flip_box(b, paper_h));
+  PackResult packed = pack_items(items, pack_options);
+  if (!packed.unplaced.empty()) {
+    attempt.complete = false;
+    if (!max_sheets) {
+      const double largest = largest_fitting_size(u, o, 2 * o.pack_cell_mm);
+      throw LayoutError("piece " + std::to_string(packed.unplaced.front() + 1) + " does not fit the " +
+                        format_mm(area_size.x) + "x" + format_mm(area_size.y) +
+                        " mm printable area at --size " + format_mm(r.size_mm) +
+                        "mm; the largest --size that fits is " +
+                        format_mm(std::floor(std::min(largest, r.size_mm * 0.99))) + "mm");
+    }
+    return attempt;
+  }
+  attempt.complete = true;
+
+  r.sheets.resize(packed.sheet_count);
+  r.sheet_stats.resize(packed.sheet_count);
+  for (Sheet& s : r.sheets) {
+    s.size_mm = o.paper_mm;
+    s.printable_mm = area_down;
+    if (o.regmarks) {
+      auto marks = regmark_paths(o.paper_mm, o.regmark);
+      s.paths.insert(s.paths.end(), marks.begin(), marks.end());
+    }
+  }
+
+  // Tab corners spliced into the outlines: the cutter follows the tab instead of the edge.
+  std::vector<std::vector<std::vector<const Tab*>>> tab_at(d.pieces.size());
+  for (std::size_t p = 0; p < d.pieces.size(); ++p)
+    for (const OutlineLoop& loop : d.pieces[p].outline_mm)
+      tab_at[p].emplace_back(loop.size(), nullptr);
+  for (std::size_t s = 0; s < d.seams.size(); ++s)
+    if (const auto& tab = d.tabs.tab_of_seam[s]) {
+      const SeamSide& side = d.seams[s].sides[tab->side];
+      tab_at[side.piece][side.loop][side.index] = &*tab;
+    }
+
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    const PackPlacement& place = packed.placements[p];
+    Sheet& sheet = r.sheets[place.sheet];
+    SheetStats& st = r.sheet_stats[place.sheet];
+    const Rigid2& t = place.transform;
+    const int piece = static_cast<int>(p);
+    st.pieces += 1;
+    st.piece_area_mm2 += d.pieces[p].area_mm2;
+    for (std::size_t l = 0; l < d.pieces[p].outline_mm.size(); ++l) {
+      Path cut{PathRole::Cut, {}, true, piece};
+      const OutlineLoop& loop = d.pieces[p].outline_mm[l];
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        cut.points_mm.push_back(to_sheet(loop[i].a, t, paper_h));
+        if (const Tab* tab = tab_at[p][l][i]) {
+          cut.points_mm.push_back(to_sheet(tab->quad_mm[1], t, paper_h));
+          cut.points_mm.push_back(to_sheet(tab->quad_mm[2], t, paper_h));
+        }
+      }
+      sheet.paths.push_back(std::move(cut));
+    }
+    for (const FoldLine& f : d.folds[p])
+      sheet.paths.push_back({f.role, {to_sheet(f.a, t, paper_h), to_sheet(f.b, t, paper_h)}, false, piece});
+    for (const auto& tab : d.tabs.tab_of_seam) {
+      if (!tab || tab->piece != piece) continue;
+      Path area{PathRole::Tab, {}, true, piece};
+      for (Vec2 v : tab->quad_mm)
+        area.points_mm.push_back(to_sheet(v, t, paper_h));
+      sheet.paths.push_back(std::move(area));
+      // The tab folds away from the printed side, behind its partner: a mountain fold seen from here.
+      sheet.paths.push_back({PathRole::Mountain,
+                             {to_sheet(tab->quad_mm[0], t, paper_h), to_sheet(tab->quad_mm[3], t, paper_h)},
+                             false,
+                             piece});
+      st.tabs += 1;
+      st.tab_area_mm2 += signed_area(tab->quad_mm);
+    }
+    for (const Arrow& a : d.arrows) {
+      if (a.piece != piece) continue;
+      Path arrow{PathRole::Hint, {}, false, piece};
+      for (Vec2 v : a.points_mm)
+        arrow.points_mm.push_back(to_sheet(v, t, paper_h));
+      arrow.tint = d.numbers[a.seam] - 1;
+      sheet.paths.push_back(std::move(arrow));
+    }
+    for (const Label& label : d.labels) {
+      if (label.piece != piece) continue;
+      sheet.texts.push_back(
+          make_text(label.text, label.at_mm, label.dir, label.height_mm, PathRole::Label, piece, t, paper_h));
+      if (!label.hint.empty()) {
+        const Vec2 at =
+            label.at_mm +
+            label.dir * (label_width_mm(label.text, label.height_mm, LabelOptions{}) + 0.3 * label.height_mm);
+        sheet.texts.push_back(
+            make_text(label.hint, at, label.dir, 0.75 * label.height_mm, PathRole::Hint, piece, t, paper_h));
+      }
+      st.labels += 1;
+      st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);
+    }
+  }
+  for (int s : d.tabs.dropped) {
+    const SeamSide& side = d.seams[s].sides[0];
+    if (side.piece >= 0) r.sheet_stats[packed.placements[side.piece].sheet].dropped_tabs += 1;
+  }
+
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const PackPlacement& place = packed.placements[piece_items + b];
+    Sheet& sheet = r.sheets[place.sheet];
+    const ListBlock& block = blocks[b];
+    // Lines top-down inside the block's own frame (y up): the first line at the top.
+    for (std::size_t i = 0; i < block.lines.size(); ++i) {
+      const Vec2 at{1, block.size_mm.y - 3.6 * (static_cast<double>(i) + 1)};
+      sheet.texts.push_back(
+          make_text(block.lines[i], at, {1, 0}, 2.4, PathRole::Hint, -1, place.transform, paper_h));
+    }
+  }
+
+  // Stats and notes.
+  const double printable = area.width() * area.height();
+  for (SheetStats& st : r.sheet_stats) {
+    st.coverage = (st.piece_area_mm2 + st.tab_area_mm2) / printable;
+    r.overall.pieces += st.pieces;
+    r.overall.tabs += st.tabs;
+    r.overall.dropped_tabs += st.dropped_tabs;
+    r.overall.labels += st.labels;
+    r.overall.piece_area_mm2 += st.piece_area_mm2;
+    r.overall.tab_area_mm2 += st.tab_area_mm2;
+    if (st.min_label_mm > 0)
+      r.overall.min_label_mm =
+          r.overall.min_label_mm == 0 ? st.min_label_mm : std::min(r.overall.min_label_mm, st.min_label_mm);
+  }
+  if (!r.sheets.empty())
+    r.overall.coverage = (r.overall.piece_area_mm2 + r.overall.tab_area_mm2) / (printable * r.sheets.size());
+  if (!d.tabs.dropped.empty()) {
+    std::string list;
+    for (int s : d.tabs.dropped)
+      list += (list.empty() ? "" : ", ") + std::to_string(d.numbers[s]);
+    r.notes.push_back(std::to_string(d.tabs.dropped.size()) +
+                      " seam(s) without a glue tab (no room on either side): " + list);
+  }
+  int crowded = 0;
+  for (const Label& label : d.labels)
+    crowded += label.crowded;
+  if (crowded > 0)
+    r.notes.push_back(std::to_string(crowded) + " edge number(s) had no clear spot and touch a line");
+  r.seam_number.assign(u.edges.size(), 0);
+  for (std::size_t s = 0; s < d.seams.size(); ++s)
+    r.seam_number[d.seams[s].edge] = d.numbers[s];
+  for (std::size_t step = 0; step < d.order.size(); ++step) {
+    const int s = d.order[step];
+    r.assembly.push_back({static_cast<int>(step) + 1, d.numbers[s], d.seams[s].fold_angle_rad});
+  }
+  return attempt;
+}
+
+double total_model_area(const unfold::Unfolding& u) {
+  double a = 0;
+  for (const Triangle2& t : u.flat)
+    a += std::fabs(signed_area(t));
+  return a;
+}
+
+}  // namespace
+
+Box2 printable_area(const LayoutOptions& o) {
+  Box2 area{{o.margin_mm, o.margin_mm}, {o.paper_mm.x - o.margin_mm, o.paper_mm.y - o.margin_mm}};
+  if (o.regmarks) {
+    const Box2 reach = regmark_cut_area(o.paper_mm, o.regmark);
+    area = Box2{{std::max(area.min.x, reach.min.x), std::max(area.min.y, reach.min.y)},
+                {std::min(area.max.x, reach.max.x), std::min(area.max.y, reach.max.y)}};
+  }
+  return area;
+}
+
+LayoutResult layout_sheets(const unfold::Unfolding& u, const LayoutOptions& o) {
+  validate(o);
+  if (u.num_faces() == 0 || u.piece_count == 0)
+    throw LayoutError("nothing to lay out: the unfolding has no faces");
+  if (!(u.model_extent > 0)) throw LayoutError("the model has no extent to scale");
+
+  if (o.size_mm && !o.fit) return build(u, o, *o.size_mm / u.model_extent, std::nullopt).result;
+
+  // --fit (the default without --size): the largest scale at which everything packs onto one sheet.
+  // The scale that lets the largest piece fit and the one that fills the sheet's area bound it above;
+  // a bisection on packing runs finds it to within 1%.
+  const Box2 area = printable_area(o);
+  const double by_piece = largest_fitting_size(u, o, 2 * o.pack_cell_mm) / u.model_extent;
+  const double by_area = std::sqrt(area.width() * area.height() / std::max(total_model_area(u), 1e-300));
+  double hi = std::min(by_piece, by_area);
+  Attempt best = build(u, o, hi, 1);
+  if (best.complete) return best.result;
+  double lo = hi * 0.5;
+  for (Attempt a = build(u, o, lo, 1);; a = build(u, o, lo, 1)) {
+    if (a.complete) {
+      best = std::move(a);
+      break;
+    }
+    hi = lo;
+    lo *= 0.5;
+    if (lo < by_area * 1e-3) throw LayoutError("the model does not fit one sheet at any scale");
+  }
+  while (hi / lo > 1.01) {
+    const double mid = std::sqrt(lo * hi);
+    Attempt a = build(u, o, mid, 1);
+    if (a.complete) {
+      lo = mid;
+      best = std::move(a);
+    } else {
+      hi = mid;
+    }
+  }
+  return best.result;
+}
+
+}  // namespace foldkit::layout

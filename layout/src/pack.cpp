@@ -1,0 +1,267 @@
+#include "foldkit/layout/pack.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+namespace foldkit::layout {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// An item at one rotation, as runs of cells per row relative to its raster origin.
+struct Raster {
+  double angle_rad = 0;
+  Vec2 origin;  // item-frame point (after rotation) at the raster's lower-left cell corner
+  int width = 0, height = 0;
+  std::vector<std::vector<std::pair<int, int>>> runs;  // per row: inclusive [i0, i1]
+  long cells = 0;
+};
+
+std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
+  std::vector<Polygon> out(shape.begin(), shape.end());
+  for (Polygon& p : out)
+    for (Vec2& v : p)
+      v = rotated(v, angle);
+  return out;
+}
+
+// Marks every cell whose centre lies inside the shape grown by `grow`: with grow = spacing/2 plus half
+// a cell diagonal (plus the arc tolerance), that is every cell the shape grown by spacing/2 touches.
+Raster rasterize(std::span<const Polygon> shape, double angle, double grow, double cell) {
+  Raster r;
+  r.angle_rad = angle;
+  constexpr double kArcTolerance = 0.02;
+  std::vector<Polygon> grown = polygon_offset(rotate_all(shape, angle), grow + kArcTolerance, kArcTolerance);
+  Box2 box;
+  for (const Polygon& p : grown)
+    box.add(bounds_of(p));
+  if (box.empty()) return r;
+  r.origin = box.min;
+  r.width = static_cast<int>(std::ceil(box.width() / cell)) + 1;
+  r.height = static_cast<int>(std::ceil(box.height() / cell)) + 1;
+  r.runs.resize(r.height);
+  std::vector<double> xs;
+  for (int j = 0; j < r.height; ++j) {
+    const double y = r.origin.y + cell * (j + 0.5);
+    xs.clear();
+    for (const Polygon& p : grown)
+      for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+        Vec2 a = p[i], b = p[(i + 1) % n];
+        if ((a.y <= y) != (b.y <= y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+      }
+    std::sort(xs.begin(), xs.end());
+    // Clipper's offset output is a set of disjoint outer loops and holes: even-odd filling is exact.
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      int i0 = static_cast<int>(std::ceil((xs[k] - r.origin.x) / cell - 0.5));
+      int i1 = static_cast<int>(std::floor((xs[k + 1] - r.origin.x) / cell - 0.5));
+      i0 = std::max(i0, 0);
+      i1 = std::min(i1, r.width - 1);
+      if (i0 > i1) continue;
+      auto& row = r.runs[j];
+      if (!row.empty() && i0 <= row.back().second + 1) {
+        row.back().second = std::max(row.back().second, i1);
+      } else {
+        row.push_back({i0, i1});
+      }
+    }
+    for (auto [i0, i1] : r.runs[j])
+      r.cells += i1 - i0 + 1;
+  }
+  return r;
+}
+
+// Occupancy of one sheet. last_taken[y * nx + x] is the largest x' <= x whose cell is taken, or -1:
+// a run of an item collides exactly when the last taken cell at its right end is at or after its left end,
+// and that cell tells how far the item must move right.
+class SheetGrid {
+ public:
+  SheetGrid(int nx, int ny)
+      : nx_(nx), ny_(ny), taken_(std::size_t(nx) * ny, 0), last_taken_(taken_.size(), -1) {
+    free_ = long(nx) * ny;
+  }
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  long free_cells() const { return free_; }
+
+  void take(int y, int x0, int x1) {
+    if (y < 0 || y >= ny_) return;
+    x0 = std::max(x0, 0);
+    x1 = std::min(x1, nx_ - 1);
+    for (int x = x0; x <= x1; ++x) {
+      auto& cell = taken_[std::size_t(y) * nx_ + x];
+      if (!cell) --free_;
+      cell = 1;
+    }
+    int last = -1;
+    for (int x = 0; x < nx_; ++x) {
+      if (taken_[std::size_t(y) * nx_ + x]) last = x;
+      last_taken_[std::size_t(y) * nx_ + x] = last;
+    }
+  }
+
+  // Smallest x >= from at which raster r, with its bottom row at y, meets no taken cell; -1 if none.
+  int first_fit_in_row(const Raster& r, int y, int from) const {
+    int x = from;
+    int hot_row = 0;  // the row that collided last is the likeliest to collide again
+    while (x + r.width <= nx_) {
+      bool collided = false;
+      for (int step = 0; step < r.height && !collided; ++step) {
+        const int j = (hot_row + step) % r.height;
+        const int* last = &last_taken_[std::size_t(y + j) * nx_];
+        for (auto [i0, i1] : r.runs[j]) {
+          const int hit = last[x + i1];
+          if (hit >= x + i0) {
+            x = hit - i0 + 1;
+            hot_row = j;
+            collided = true;
+            break;
+          }
+        }
+      }
+      if (!collided) return x;
+    }
+    return -1;
+  }
+
+ private:
+  int nx_, ny_;
+  std::vector<std::uint8_t> taken_;
+  std::vector<int> last_taken_;
+  long free_ = 0;
+};
+
+struct Spot {
+  int x = -1, y = -1;
+  const Raster* raster = nullptr;
+};
+
+// Highest (then leftmost) free position of any of the rasters on the grid.
+Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
+  Spot best;
+  for (const Raster& r : rasters) {
+    if (r.width > grid.nx() || r.height > grid.ny() || r.cells > grid.free_cells()) continue;
+    for (int y = grid.ny() - r.height; y >= std::max(best.y, 0); --y) {
+      const int x = grid.first_fit_in_row(r, y, 0);
+      if (x < 0) continue;
+      if (y > best.y || (y == best.y && x < best.x)) best = {x, y, &r};
+      break;
+    }
+  }
+  return best;
+}
+
+std::vector<double> candidate_angles(const PackItem& item, int rotations) {
+  if (!item.rotate) return {0.0};
+  std::vector<double> angles;
+  const int n = std::max(rotations, 1);
+  for (int k = 0; k < n; ++k)
+    angles.push_back(2 * kPi * k / n);
+  std::vector<Vec2> points;
+  for (const Polygon& p : item.shape_mm)
+    points.insert(points.end(), p.begin(), p.end());
+  const double tight = min_area_rect_angle(points);
+  for (int k = 0; k < 4; ++k)
+    angles.push_back(tight + k * kPi / 2);
+  angles.insert(angles.end(), item.extra_angles_rad.begin(), item.extra_angles_rad.end());
+  std::vector<double> unique;
+  for (double a : angles) {
+    a = std::fmod(a, 2 * kPi);
+    if (a < 0) a += 2 * kPi;
+    bool seen = false;
+    for (double u : unique) {
+      double d = std::fabs(a - u);
+      seen |= std::min(d, 2 * kPi - d) < kPi / 360;
+    }
+    if (!seen) unique.push_back(a);
+  }
+  return unique;
+}
+
+}  // namespace
+
+double min_area_rect_angle(std::span<const Vec2> points) {
+  Polygon hull = convex_hull(std::vector<Vec2>(points.begin(), points.end()));
+  double best_angle = 0, best_area = 1e300;
+  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+    Vec2 e = hull[(i + 1) % n] - hull[i];
+    if (norm(e) == 0) continue;
+    const double angle = -std::atan2(e.y, e.x);
+    Box2 box;
+    for (Vec2 p : hull)
+      box.add(rotated(p, angle));
+    if (box.width() * box.height() < best_area - 1e-9) {
+      best_area = box.width() * box.height();
+      best_angle = angle;
+    }
+  }
+  return best_angle;
+}
+
+PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
+  PackResult result;
+  result.placements.resize(items.size());
+  const double cell = options.cell_mm;
+  const double half_gap = 0.5 * options.spacing_mm;
+  // The grid reaches half a gap beyond the area: an item's grown shape may use it, the item may not.
+  const Vec2 grid_min = options.area_mm.min - Vec2{half_gap, half_gap};
+  const int nx = static_cast<int>(std::floor((options.area_mm.width() + 2 * half_gap) / cell));
+  const int ny = static_cast<int>(std::floor((options.area_mm.height() + 2 * half_gap) / cell));
+  const double grow = half_gap + cell * std::sqrt(0.5);
+
+  auto new_sheet = [&] {
+    SheetGrid grid(std::max(nx, 0), std::max(ny, 0));
+    for (const Box2& box : options.keep_out_mm) {
+      const int x0 = static_cast<int>(std::floor((box.min.x - half_gap - grid_min.x) / cell));
+      const int x1 = static_cast<int>(std::ceil((box.max.x + half_gap - grid_min.x) / cell)) - 1;
+      const int y0 = static_cast<int>(std::floor((box.min.y - half_gap - grid_min.y) / cell));
+      const int y1 = static_cast<int>(std::ceil((box.max.y + half_gap - grid_min.y) / cell)) - 1;
+      for (int y = y0; y <= y1; ++y)
+        grid.take(y, x0, x1);
+    }
+    return grid;
+  };
+
+  std::vector<double> area(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i)
+    area[i] = std::fabs(total_area(items[i].shape_mm));
+  std::vector<int> order(items.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area[a] > area[b]; });
+
+  std::vector<SheetGrid> sheets;
+  for (int index : order) {
+    std::vector<Raster> rasters;
+    for (double angle : candidate_angles(items[index], options.rotations))
+      rasters.push_back(rasterize(items[index].shape_mm, angle, grow, cell));
+
+    Spot spot;
+    int sheet = 0;
+    for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
+      spot = find_spot(sheets[sheet], rasters);
+      if (spot.raster) break;
+    }
+    if (!spot.raster && (!options.max_sheets || static_cast<int>(sheets.size()) < *options.max_sheets)) {
+      SheetGrid fresh = new_sheet();
+      spot = find_spot(fresh, rasters);
+      if (spot.raster) sheets.push_back(std::move(fresh));
+    }
+    if (!spot.raster) {
+      result.unplaced.push_back(index);
+      continue;
+    }
+    const Raster& r = *spot.raster;
+    for (int j = 0; j < r.height; ++j)
+      for (auto [i0, i1] : r.runs[j])
+        sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
+    const Vec2 corner = grid_min + Vec2{cell * spot.x, cell * spot.y};
+    result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
+  }
+  std::sort(result.unplaced.begin(), result.unplaced.end());
+  result.sheet_count = static_cast<int>(sheets.size());
+  return result;
+}
+
+}  // namespace foldkit::layout

@@ -1,0 +1,153 @@
+#include "foldkit/layout/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <polyclipping/clipper.hpp>
+
+namespace foldkit::layout {
+namespace {
+
+// Clipper works on integers: 1e-5 mm steps keep rounding far below anything printable while sheets of
+// a few metres stay well inside the 2^62 range.
+constexpr double kClipperScale = 1e5;
+
+ClipperLib::Path to_clipper(std::span<const Vec2> polygon) {
+  ClipperLib::Path out;
+  out.reserve(polygon.size());
+  for (Vec2 p : polygon)
+    out.push_back({static_cast<ClipperLib::cInt>(std::llround(p.x * kClipperScale)),
+                   static_cast<ClipperLib::cInt>(std::llround(p.y * kClipperScale))});
+  return out;
+}
+
+ClipperLib::Paths to_clipper(std::span<const Polygon> polygons) {
+  ClipperLib::Paths out;
+  out.reserve(polygons.size());
+  for (const Polygon& p : polygons)
+    if (p.size() >= 3) out.push_back(to_clipper(p));
+  return out;
+}
+
+std::vector<Polygon> from_clipper(const ClipperLib::Paths& paths) {
+  std::vector<Polygon> out;
+  out.reserve(paths.size());
+  for (const ClipperLib::Path& path : paths) {
+    Polygon poly;
+    poly.reserve(path.size());
+    for (const ClipperLib::IntPoint& q : path)
+      poly.push_back({static_cast<double>(q.X) / kClipperScale, static_cast<double>(q.Y) / kClipperScale});
+    out.push_back(std::move(poly));
+  }
+  return out;
+}
+
+}  // namespace
+
+double signed_area(std::span<const Vec2> polygon) {
+  double twice = 0;
+  for (std::size_t i = 0, n = polygon.size(); i < n; ++i)
+    twice += cross(polygon[i], polygon[(i + 1) % n]);
+  return 0.5 * twice;
+}
+
+Box2 bounds_of(std::span<const Vec2> points) {
+  Box2 box;
+  for (Vec2 p : points)
+    box.add(p);
+  return box;
+}
+
+bool convex_overlap(std::span<const Vec2> a, std::span<const Vec2> b, double eps) {
+  // q is separated from p when, for some edge of p, every point of q lies outside that edge's line or
+  // within eps inside it.
+  auto separated_by_edges_of = [eps](std::span<const Vec2> p, std::span<const Vec2> q) {
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      Vec2 e = p[(i + 1) % n] - p[i];
+      double len = norm(e);
+      if (len == 0) continue;
+      double deepest = -1e300;
+      for (Vec2 v : q)
+        deepest = std::fmax(deepest, cross(e, v - p[i]) / len);
+      if (deepest <= eps) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
+}
+
+bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset) {
+  for (std::size_t i = 0, n = polygon.size(); i < n; ++i) {
+    Vec2 e = polygon[(i + 1) % n] - polygon[i];
+    double len = norm(e);
+    if (len == 0) continue;
+    if (cross(e, p - polygon[i]) / len < inset) return false;
+  }
+  return true;
+}
+
+Polygon convex_hull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(),
+            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  // Andrew's monotone chain.
+  Polygon hull(2 * points.size());
+  std::size_t k = 0;
+  for (Vec2 p : points) {
+    while (k >= 2 && orient2d(hull[k - 2], hull[k - 1], p) <= 0)
+      --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    Vec2 p = points[i];
+    while (k >= lower && orient2d(hull[k - 2], hull[k - 1], p) <= 0)
+      --k;
+    hull[k++] = p;
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+std::vector<Polygon> polygon_union(std::span<const Polygon> polygons) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(to_clipper(polygons), ClipperLib::ptSubject, true);
+  ClipperLib::Paths solution;
+  clipper.Execute(ClipperLib::ctUnion, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return from_clipper(solution);
+}
+
+std::vector<Polygon> polygon_offset(std::span<const Polygon> polygons, double delta_mm,
+                                    double arc_tolerance_mm) {
+  // Offsetting overlapping inputs one by one would leave their overlaps doubled; union first.
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(to_clipper(polygons), ClipperLib::ptSubject, true);
+  ClipperLib::Paths merged;
+  clipper.Execute(ClipperLib::ctUnion, merged, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  ClipperLib::ClipperOffset offset(2.0, arc_tolerance_mm * kClipperScale);
+  offset.AddPaths(merged, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths solution;
+  offset.Execute(solution, delta_mm * kClipperScale);
+  return from_clipper(solution);
+}
+
+double intersection_area(std::span<const Polygon> a, std::span<const Polygon> b) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
+  clipper.AddPaths(to_clipper(b), ClipperLib::ptClip, true);
+  ClipperLib::Paths solution;
+  clipper.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  double area = 0;
+  for (const ClipperLib::Path& p : solution)
+    area += ClipperLib::Area(p);
+  return area / (kClipperScale * kClipperScale);
+}
+
+double total_area(std::span<const Polygon> polygons) {
+  double area = 0;
+  for (const Polygon& p : polygons)
+    area += signed_area(p);
+  return area;
+}
+
+}  // namespace foldkit::layout
