@@ -1,8 +1,11 @@
 #pragma once
 // Where a job's bytes go: a USB cutter, a file or device node, or the simulated device.
+#include <chrono>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace foldkit::devices {
 
@@ -20,6 +23,15 @@ class Transport {
   virtual DeviceState status() = 0;
   /// Flushes and releases the device or file. Safe to call twice.
   virtual void close() = 0;
+  /// Sends `command` and returns the device's reply (up to and including its terminator), or nullopt
+  /// when this transport cannot read replies (files, device nodes). Throws DeviceError when no reply
+  /// arrives within `timeout`. The default just writes.
+  virtual std::optional<std::vector<std::byte>> request(std::span<const std::byte> command,
+                                                        std::chrono::milliseconds timeout) {
+    (void)timeout;
+    write(command);
+    return std::nullopt;
+  }
   /// A short description for messages, e.g. "usb 0b4d:1137 (Silhouette Cameo 4)" or "file job.gpgl".
   virtual std::string describe() const = 0;
 };

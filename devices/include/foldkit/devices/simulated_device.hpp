@@ -1,0 +1,105 @@
+#pragma once
+// A cutting plotter in software: a Transport that parses what it receives as strictly as the profile's
+// device would be expected to, keeps tool, pen and position state, answers status and registration-mark
+// queries, can be told to fail, and renders what it cut, scored and drew. Used by --dry-run and by the
+// round-trip tests (sheet -> job -> bytes -> strokes back).
+#include <cstddef>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foldkit/devices/command_parser.hpp"
+#include "foldkit/devices/profile.hpp"
+#include "foldkit/devices/transport.hpp"
+
+namespace foldkit::devices {
+
+/// Failures the simulated device can be told to show.
+struct SimFaults {
+  bool not_ready = false;                       ///< reports paused (status 3) forever
+  bool no_media = false;                        ///< reports no media (status 2); refuses geometry
+  std::optional<std::size_t> disconnect_after;  ///< unplugged once this many bytes arrived
+  std::optional<std::size_t> stall_after;       ///< accepts no more bytes (write timeout), busy
+  bool marks_not_found = false;                 ///< registration-mark search fails
+};
+
+struct SimOptions {
+  std::string mat;  ///< mat id (empty = the profile's first)
+  SimFaults faults;
+  bool require_initialize = true;   ///< GP-GL: ESC 04 must come before set-up commands
+  std::map<int, ToolKind> mounted;  ///< tool per holder for rendering; default from the profile
+};
+
+/// One tool-down polyline the device executed, in the device coordinates it received.
+struct SimStroke {
+  int holder = 1;
+  int force = 0, speed = 0;
+  std::vector<Vec2> points;
+};
+
+/// A Transport that executes HP-GL or GP-GL (the profile's protocol) on a simulated device.
+class SimulatedDevice final : public Transport {
+ public:
+  explicit SimulatedDevice(DeviceProfile profile, SimOptions options = {});
+
+  /// Parses and executes; throws DeviceError naming the byte offset of the first bad command, or the
+  /// injected fault. After an error every call throws.
+  void write(std::span<const std::byte> bytes) override;
+  DeviceState status() override;
+  /// Writes `command` and returns the reply it produced; throws DeviceError (timeout) when it gives none.
+  std::optional<std::vector<std::byte>> request(std::span<const std::byte> command,
+                                                std::chrono::milliseconds timeout) override;
+  /// Ends the stream: throws DeviceError when it stopped inside a command or left the tool down.
+  void close() override;
+  std::string describe() const override;
+
+  /// Strokes executed so far, in order.
+  const std::vector<SimStroke>& strokes() const { return strokes_; }
+  /// Replies not yet read (ETX- or CR-terminated).
+  std::size_t pending_replies() const { return replies_.size(); }
+  /// Bytes accepted.
+  std::size_t bytes_received() const { return received_; }
+  /// Tool-down and tool-up path lengths in mm.
+  double down_length_mm() const;
+  double travel_mm() const { return travel_units_ / profile_.units_per_mm; }
+  /// Where the registration-mark search put the logical origin (device units), if it ran.
+  std::optional<Vec2> mark_origin() const { return mark_origin_; }
+
+  /// Renders the executed strokes to `path` (.png or .svg, by extension) in sheet orientation and
+  /// millimetres: cuts black, blade scores blue, scoring tool green, pen red. Atomic write.
+  void render(const std::filesystem::path& path, double png_dpi = 150) const;
+
+ private:
+  void execute(const ParsedCommand& c);
+  void execute_gpgl(const ParsedCommand& c);
+  void execute_hpgl(const ParsedCommand& c);
+  void move_to(Vec2 p, bool down, std::size_t offset);
+  void pen_up();
+  void reply(const std::string& text);
+  [[noreturn]] void fail(std::size_t offset, const std::string& problem);
+  void check_alive() const;
+
+  DeviceProfile profile_;
+  SimOptions options_;
+  Vec2 area_mm_;
+  Vec2 area_min_, area_max_;  // device units
+  Vec2 window_min_, window_max_;
+  GpglParser gpgl_;
+  HpglParser hpgl_;
+  std::size_t received_ = 0;
+  bool initialized_ = false, closed_ = false, down_ = false, relative_ = false;
+  bool marks_failed_ = false;
+  std::optional<std::string> error_;
+  int holder_ = 0;
+  std::map<int, int> speed_, force_;
+  Vec2 pos_;
+  double travel_units_ = 0;
+  std::optional<Vec2> mark_origin_;
+  std::vector<SimStroke> strokes_;
+  std::deque<std::string> replies_;
+};
+
+}  // namespace foldkit::devices

@@ -1,0 +1,478 @@
+#include "foldkit/devices/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+#include <toml++/toml.h>
+
+#include "foldkit/error.hpp"
+
+namespace foldkit::devices {
+namespace fs = std::filesystem;
+
+const char* protocol_name(Protocol p) {
+  return p == Protocol::Gpgl ? "gpgl" : "hpgl";
+}
+
+const char* tool_kind_name(ToolKind k) {
+  switch (k) {
+    case ToolKind::Blade:
+      return "blade";
+    case ToolKind::Pen:
+      return "pen";
+    case ToolKind::Scorer:
+      return "scorer";
+  }
+  return "?";
+}
+
+const char* fold_method_name(FoldMethod m) {
+  switch (m) {
+    case FoldMethod::Scorer:
+      return "scorer";
+    case FoldMethod::ReducedForce:
+      return "reduced-force";
+    case FoldMethod::Perforate:
+      return "perforate";
+    case FoldMethod::None:
+      return "none";
+  }
+  return "?";
+}
+
+namespace {
+
+// Reads one TOML table, remembering which keys were asked for so that leftovers (typos, keys from
+// another version) are reported instead of ignored.
+class Reader {
+ public:
+  Reader(const toml::table& table, std::string file, std::string prefix)
+      : table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+    throw InputError(file_, path(key) + ": " + problem);
+  }
+  std::string path(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
+  bool has(const std::string& key) const { return table_.contains(key); }
+
+  double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (fallback) return *fallback;
+      fail(key, "missing");
+    }
+    if (auto v = node->value_exact<double>()) return check_finite(key, *v);
+    if (auto v = node->value_exact<std::int64_t>()) return static_cast<double>(*v);
+    fail(key, "expected a number");
+  }
+  double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (!(v > 0)) fail(key, "must be greater than 0, got " + format(v));
+    return v;
+  }
+  double non_negative(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (v < 0) fail(key, "must not be negative, got " + format(v));
+    return v;
+  }
+  std::int64_t integer(const std::string& key, std::int64_t lo, std::int64_t hi,
+                       std::optional<std::int64_t> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (fallback) return *fallback;
+      fail(key, "missing");
+    }
+    auto v = node->value_exact<std::int64_t>();
+    if (!v) fail(key, "expected an integer");
+    if (*v < lo || *v > hi)
+      fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+                    std::to_string(*v));
+    return *v;
+  }
+  bool boolean(const std::string& key, std::optional<bool> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (fallback) return *fallback;
+      fail(key, "missing");
+    }
+    auto v = node->value_exact<bool>();
+    if (!v) fail(key, "expected true or false");
+    return *v;
+  }
+  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (fallback) return *fallback;
+      fail(key, "missing");
+    }
+    auto v = node->value_exact<std::string>();
+    if (!v) fail(key, "expected a string");
+    return *v;
+  }
+  template <typename Enum>
+  Enum choice(const std::string& key, const std::vector<std::pair<std::string, Enum>>& options,
+              std::optional<Enum> fallback = std::nullopt) {
+    if (!has(key) && fallback) {
+      used_.insert(key);
+      return *fallback;
+    }
+    const std::string v = string(key);
+    for (const auto& [name, value] : options) {
+      if (name == v) return value;
+    }
+    std::string names;
+    for (const auto& o : options)
+      names += (names.empty() ? "" : ", ") + o.first;
+    fail(key, "unknown value \"" + v + "\" (expected one of " + names + ")");
+  }
+  // A sub-table; missing is an error unless `optional`, then an empty table is read.
+  Reader table(const std::string& key, bool optional = false) {
+    used_.insert(key);
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (!optional) fail(key, "missing table");
+      return Reader(empty_table(), file_, path(key));
+    }
+    const toml::table* t = node->as_table();
+    if (!t) fail(key, "expected a table");
+    return Reader(*t, file_, path(key));
+  }
+  // An array of tables ([[key]]).
+  std::vector<Reader> tables(const std::string& key, bool optional = false) {
+    used_.insert(key);
+    std::vector<Reader> out;
+    const toml::node* node = table_.get(key);
+    if (!node) {
+      if (!optional) fail(key, "missing");
+      return out;
+    }
+    const toml::array* arr = node->as_array();
+    if (!arr) fail(key, "expected an array of tables ([[" + key + "]])");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::table* t = (*arr)[i].as_table();
+      if (!t) fail(key, "element " + std::to_string(i + 1) + " is not a table");
+      out.emplace_back(*t, file_, path(key) + "[" + std::to_string(i + 1) + "]");
+    }
+    return out;
+  }
+  // Throws for the first key nobody asked for.
+  void finish() const {
+    for (const auto& [key, node] : table_) {
+      const std::string k(key.str());
+      if (!used_.count(k)) fail(k, "unknown key");
+    }
+  }
+
+ private:
+  static const toml::table& empty_table() {
+    static const toml::table empty;
+    return empty;
+  }
+  double check_finite(const std::string& key, double v) const {
+    if (!std::isfinite(v)) fail(key, "must be a finite number");
+    return v;
+  }
+  static std::string format(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+  const toml::table& table_;
+  std::string file_, prefix_;
+  std::set<std::string> used_;
+};
+
+toml::table parse(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw InputError(file.string(), "no such profile file");
+  try {
+    return toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    std::ostringstream where;
+    where << "line " << e.source().begin.line << ", column " << e.source().begin.column << ": "
+          << e.description();
+    throw InputError(file.string(), where.str());
+  }
+}
+
+const std::vector<std::pair<std::string, FoldMethod>> kFoldMethods = {
+    {"scorer", FoldMethod::Scorer},
+    {"reduced-force", FoldMethod::ReducedForce},
+    {"perforate", FoldMethod::Perforate},
+    {"none", FoldMethod::None}};
+
+StepRange read_range(Reader& r) {
+  StepRange s;
+  s.min = static_cast<int>(r.integer("min", 0, 10000));
+  s.max = static_cast<int>(r.integer("max", 0, 10000));
+  if (s.max < s.min) r.fail("max", "must not be below min");
+  return s;
+}
+
+DeviceProfile read_device(Reader& root, const fs::path& file) {
+  DeviceProfile d;
+  d.file = file;
+  d.id = file.stem().string();
+  d.name = root.string("name");
+  d.protocol = root.choice<Protocol>("protocol", {{"gpgl", Protocol::Gpgl}, {"hpgl", Protocol::Hpgl}});
+  d.firmware = root.string("firmware", d.name);
+  d.units_per_mm = root.positive("units_per_mm");
+  d.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods, FoldMethod::ReducedForce);
+  d.travel_speed_mm_s = root.positive("travel_speed_mm_s", 200.0);
+  d.tool_change_s = root.non_negative("tool_change_s", 0.2);
+
+  Reader usb = root.table("usb", true);
+  d.usb_vendor = static_cast<std::uint16_t>(usb.integer("vendor", 0, 0xffff, 0));
+  d.usb_product = static_cast<std::uint16_t>(usb.integer("product", 0, 0xffff, 0));
+  usb.finish();
+
+  Reader axes = root.table("axes");
+  d.axes.feed_first = axes.choice<bool>("first", {{"feed", true}, {"carriage", false}});
+  d.axes.carriage_reversed = axes.choice<bool>("carriage_from", {{"left", false}, {"right", true}});
+  d.axes.feed_reversed = axes.choice<bool>("feed_from", {{"top", false}, {"bottom", true}});
+  axes.finish();
+
+  Reader area = root.table("area");
+  d.area_width_mm = area.positive("width_mm");
+  d.area_max_length_mm = area.positive("max_length_mm");
+  d.margin_mm = area.non_negative("margin_mm", 0.0);
+  area.finish();
+
+  for (Reader& m : root.tables("mats", true)) {
+    Mat mat;
+    mat.id = m.string("id");
+    mat.code = static_cast<int>(m.integer("code", 0, 99, 0));
+    mat.width_mm = m.positive("width_mm");
+    mat.length_mm = m.positive("length_mm");
+    if (mat.width_mm > d.area_width_mm + 1e-9)
+      m.fail("width_mm", "wider than the cutting area (" + std::to_string(d.area_width_mm) + " mm)");
+    if (d.mat(mat.id)) m.fail("id", "mat \"" + mat.id + "\" given twice");
+    m.finish();
+    d.mats.push_back(mat);
+  }
+
+  Reader holders = root.table("holders");
+  d.holders = static_cast<int>(holders.integer("count", 1, 9));
+  holders.finish();
+  for (Reader& t : root.tables("tools")) {
+    Tool tool;
+    tool.id = t.string("id");
+    tool.kind = t.choice<ToolKind>(
+        "kind", {{"blade", ToolKind::Blade}, {"pen", ToolKind::Pen}, {"scorer", ToolKind::Scorer}});
+    tool.holder = static_cast<int>(t.integer("holder", 1, d.holders));
+    tool.offset_code = static_cast<int>(t.integer("offset_code", 0, 100, 0));
+    t.finish();
+    d.tools.push_back(tool);
+  }
+  if (!d.tool(ToolKind::Blade)) root.fail("tools", "no tool of kind \"blade\"");
+
+  Reader speed = root.table("speed");
+  d.speed_steps = read_range(speed);
+  d.mm_s_per_speed_step = speed.positive("mm_s_per_step");
+  speed.finish();
+  Reader force = root.table("force");
+  d.force_steps = read_range(force);
+  d.gf_per_force_step = force.positive("gf_per_step");
+  force.finish();
+
+  Reader reg = root.table("regmarks", true);
+  d.regmarks.supported = reg.boolean("supported", false);
+  d.regmarks.search = reg.choice<std::string>("search", {{"TB123", "TB123"}, {"TB124", "TB124"}}, "TB123");
+  d.regmarks.mark_type = static_cast<int>(reg.integer("mark_type", 0, 9, 2));
+  d.regmarks.square_mm = reg.positive("square_mm", 5.0);
+  d.regmarks.arm_length_mm = reg.positive("arm_length_mm", 20.0);
+  d.regmarks.stroke_mm = reg.positive("stroke_mm", 0.5);
+  d.regmarks.inset_mm = reg.non_negative("inset_mm", 10.0);
+  reg.finish();
+
+  Reader hpgl = root.table("hpgl", true);
+  d.hpgl_force_command = hpgl.choice<std::string>("force_command", {{"FS", "FS"}, {"none", ""}}, "FS");
+  hpgl.finish();
+  if (d.protocol == Protocol::Gpgl && root.has("hpgl")) root.fail("hpgl", "only for protocol \"hpgl\"");
+  if (d.fold_method == FoldMethod::Scorer && !d.tool(ToolKind::Scorer))
+    root.fail("fold_method", "\"scorer\" but no tool of kind \"scorer\"");
+  return d;
+}
+
+ToolSettings read_settings(Reader r) {
+  ToolSettings s;
+  s.force_gf = r.positive("force_gf");
+  s.speed_mm_s = r.positive("speed_mm_s");
+  s.passes = static_cast<int>(r.integer("passes", 1, 10, 1));
+  r.finish();
+  return s;
+}
+
+MediaProfile read_media(Reader& root, const fs::path& file) {
+  MediaProfile m;
+  m.file = file;
+  m.id = file.stem().string();
+  m.name = root.string("name");
+  m.thickness_mm = root.positive("thickness_mm");
+  if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods);
+  m.cut = read_settings(root.table("cut"));
+  m.score = read_settings(root.table("score"));
+  m.draw = read_settings(root.table("draw"));
+  Reader perf = root.table("perforation", true);
+  m.perforation_cut_mm = perf.positive("cut_mm", 1.0);
+  m.perforation_gap_mm = perf.positive("gap_mm", 1.0);
+  perf.finish();
+  return m;
+}
+
+std::string read_kind(Reader& root) {
+  return root.choice<std::string>("kind", {{"device", "device"}, {"media", "media"}});
+}
+
+std::vector<fs::path> toml_files(const fs::path& dir) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return out;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+template <typename T>
+void put(std::vector<T>& list, T item) {
+  auto it = std::find_if(list.begin(), list.end(), [&](const T& x) { return x.id == item.id; });
+  if (it != list.end())
+    *it = std::move(item);
+  else
+    list.push_back(std::move(item));
+}
+
+template <typename T>
+std::string known_ids(const std::vector<T>& list) {
+  std::string out;
+  for (const T& x : list)
+    out += (out.empty() ? "" : ", ") + x.id;
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+const Mat* DeviceProfile::mat(const std::string& mat_id) const {
+  for (const Mat& m : mats) {
+    if (m.id == mat_id) return &m;
+  }
+  return nullptr;
+}
+
+const Tool* DeviceProfile::tool(ToolKind kind) const {
+  for (const Tool& t : tools) {
+    if (t.kind == kind) return &t;
+  }
+  return nullptr;
+}
+
+DeviceProfile load_device_profile(const fs::path& file) {
+  const toml::table table = parse(file);
+  Reader root(table, file.string(), "");
+  if (read_kind(root) != "device") root.fail("kind", "this is a media profile, not a device profile");
+  DeviceProfile d = read_device(root, file);
+  root.finish();
+  return d;
+}
+
+MediaProfile load_media_profile(const fs::path& file) {
+  const toml::table table = parse(file);
+  Reader root(table, file.string(), "");
+  if (read_kind(root) != "media") root.fail("kind", "this is a device profile, not a media profile");
+  MediaProfile m = read_media(root, file);
+  root.finish();
+  return m;
+}
+
+const DeviceProfile& ProfileSet::device(const std::string& id) const {
+  for (const DeviceProfile& d : devices) {
+    if (d.id == id) return d;
+  }
+  throw InputError("--device " + id, "no such device profile (known: " + known_ids(devices) + ")");
+}
+
+const MediaProfile& ProfileSet::medium(const std::string& id) const {
+  for (const MediaProfile& m : media) {
+    if (m.id == id) return m;
+  }
+  throw InputError("--media " + id, "no such media profile (known: " + known_ids(media) + ")");
+}
+
+fs::path builtin_profiles_dir(const fs::path& executable) {
+  std::error_code ec;
+#ifdef FOLDKIT_PROFILES_DIR
+  if (fs::is_directory(fs::path(FOLDKIT_PROFILES_DIR) / "devices", ec)) return FOLDKIT_PROFILES_DIR;
+#endif
+  if (!executable.empty()) {
+    const fs::path bin = executable.parent_path();
+    for (const fs::path& candidate :
+         {bin / "profiles", bin.parent_path() / "profiles", bin.parent_path() / "share/foldkit/profiles"}) {
+      if (fs::is_directory(candidate / "devices", ec)) return candidate;
+    }
+  }
+  return {};
+}
+
+ProfileSet load_profiles(const fs::path& dir, const std::vector<fs::path>& extra_files) {
+  ProfileSet set;
+  if (!dir.empty()) {
+    for (const fs::path& f : toml_files(dir / "devices"))
+      put(set.devices, load_device_profile(f));
+    for (const fs::path& f : toml_files(dir / "media"))
+      put(set.media, load_media_profile(f));
+  }
+  for (const fs::path& f : extra_files) {
+    const toml::table table = parse(f);
+    Reader root(table, f.string(), "");
+    if (read_kind(root) == "device") {
+      DeviceProfile d = read_device(root, f);
+      root.finish();
+      put(set.devices, std::move(d));
+    } else {
+      MediaProfile m = read_media(root, f);
+      root.finish();
+      put(set.media, std::move(m));
+    }
+  }
+  auto by_id = [](const auto& a, const auto& b) { return a.id < b.id; };
+  std::sort(set.devices.begin(), set.devices.end(), by_id);
+  std::sort(set.media.begin(), set.media.end(), by_id);
+  return set;
+}
+
+Vec2 page_to_device(const DeviceProfile& device, Vec2 p_mm, Vec2 area_mm) {
+  const double carriage = device.axes.carriage_reversed ? area_mm.x - p_mm.x : p_mm.x;
+  const double feed = device.axes.feed_reversed ? area_mm.y - p_mm.y : p_mm.y;
+  const double k = device.units_per_mm;
+  return device.axes.feed_first ? Vec2{feed * k, carriage * k} : Vec2{carriage * k, feed * k};
+}
+
+Vec2 device_to_page(const DeviceProfile& device, Vec2 d, Vec2 area_mm) {
+  const double k = device.units_per_mm;
+  const double feed = (device.axes.feed_first ? d.x : d.y) / k;
+  const double carriage = (device.axes.feed_first ? d.y : d.x) / k;
+  return {device.axes.carriage_reversed ? area_mm.x - carriage : carriage,
+          device.axes.feed_reversed ? area_mm.y - feed : feed};
+}
+
+int speed_step(const DeviceProfile& device, double speed_mm_s) {
+  const long step = std::lround(speed_mm_s / device.mm_s_per_speed_step);
+  return static_cast<int>(std::clamp<long>(step, device.speed_steps.min, device.speed_steps.max));
+}
+
+int force_step(const DeviceProfile& device, double force_gf) {
+  const long step = std::lround(force_gf / device.gf_per_force_step);
+  return static_cast<int>(std::clamp<long>(step, device.force_steps.min, device.force_steps.max));
+}
+
+}  // namespace foldkit::devices

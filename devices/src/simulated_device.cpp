@@ -1,0 +1,471 @@
+#include "foldkit/devices/simulated_device.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/devices/plan.hpp"
+#include "foldkit/error.hpp"
+
+namespace foldkit::devices {
+namespace {
+
+// Coordinates a hair outside the window still count as inside: GP-GL accepts decimals and rounding
+// in a sender must not be an error.
+constexpr double kTolerance = 1e-6;
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string fmt(Vec2 p) {
+  std::ostringstream s;
+  s << '(' << p.x << ", " << p.y << ')';
+  return s.str();
+}
+
+// GP-GL replies right-align numbers in 5 columns: "    0,    0".
+std::string padded(long v) {
+  std::ostringstream s;
+  s.width(5);
+  s << v;
+  return s.str();
+}
+
+bool inside(Vec2 p, Vec2 lo, Vec2 hi) {
+  return p.x >= lo.x - kTolerance && p.x <= hi.x + kTolerance && p.y >= lo.y - kTolerance &&
+         p.y <= hi.y + kTolerance;
+}
+
+cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::ostream*>(closure);
+  out->write(reinterpret_cast<const char*>(data), length);
+  return out->good() ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+}  // namespace
+
+SimulatedDevice::SimulatedDevice(DeviceProfile profile, SimOptions options)
+    : profile_(std::move(profile)), options_(std::move(options)) {
+  area_mm_ = cutting_area_mm(profile_, options_.mat);
+  const double m = profile_.margin_mm;
+  const Vec2 c1 = page_to_device(profile_, {m, m}, area_mm_);
+  const Vec2 c2 = page_to_device(profile_, {area_mm_.x - m, area_mm_.y - m}, area_mm_);
+  area_min_ = {std::round(std::fmin(c1.x, c2.x)), std::round(std::fmin(c1.y, c2.y))};
+  area_max_ = {std::round(std::fmax(c1.x, c2.x)), std::round(std::fmax(c1.y, c2.y))};
+  window_min_ = area_min_;
+  window_max_ = area_max_;
+  if (options_.mounted.empty()) {
+    for (int h = 1; h <= profile_.holders; ++h) {
+      // What a user would most likely have mounted: the blade in its holder, else a pen, else a scorer.
+      for (ToolKind k : {ToolKind::Blade, ToolKind::Pen, ToolKind::Scorer}) {
+        const Tool* t = nullptr;
+        for (const Tool& tool : profile_.tools) {
+          if (tool.kind == k && tool.holder == h && !t) t = &tool;
+        }
+        if (t && !options_.mounted.count(h)) options_.mounted[h] = k;
+      }
+    }
+  }
+}
+
+std::string SimulatedDevice::describe() const {
+  return "simulated " + profile_.name;
+}
+
+void SimulatedDevice::check_alive() const {
+  if (error_) throw DeviceError("simulated " + profile_.name + " stopped earlier: " + *error_);
+}
+
+void SimulatedDevice::fail(std::size_t offset, const std::string& problem) {
+  const std::string dialect = profile_.protocol == Protocol::Gpgl ? "GP-GL" : "HP-GL";
+  error_ = dialect + " byte " + std::to_string(offset) + ": " + problem;
+  throw DeviceError(*error_);
+}
+
+void SimulatedDevice::write(std::span<const std::byte> bytes) {
+  check_alive();
+  if (closed_) throw DeviceError("simulated " + profile_.name + ": write after close");
+  std::size_t accept = bytes.size();
+  std::optional<std::string> fault;
+  if (options_.faults.stall_after && received_ + accept > *options_.faults.stall_after) {
+    accept = *options_.faults.stall_after - std::min(received_, *options_.faults.stall_after);
+    fault = "write timed out: the device accepted no data after " +
+            std::to_string(*options_.faults.stall_after) + " bytes (stalled)";
+  }
+  if (options_.faults.disconnect_after && received_ + accept > *options_.faults.disconnect_after) {
+    accept = *options_.faults.disconnect_after - std::min(received_, *options_.faults.disconnect_after);
+    fault = "device disconnected after " + std::to_string(*options_.faults.disconnect_after) +
+            " bytes (unplugged?)";
+  }
+  const auto part = bytes.first(accept);
+  std::vector<ParsedCommand> commands;
+  try {
+    commands = profile_.protocol == Protocol::Gpgl ? gpgl_.feed(part) : hpgl_.feed(part);
+  } catch (const DeviceError& e) {
+    error_ = e.what();
+    throw;
+  }
+  received_ += accept;
+  for (const ParsedCommand& c : commands)
+    execute(c);
+  if (fault) {
+    // A stalled device stays attached and busy; an unplugged one is gone.
+    if (options_.faults.disconnect_after && received_ >= *options_.faults.disconnect_after) error_ = *fault;
+    throw DeviceError(*fault);
+  }
+}
+
+DeviceState SimulatedDevice::status() {
+  check_alive();
+  if (options_.faults.no_media) return DeviceState::NoMedia;
+  if (options_.faults.not_ready) return DeviceState::Paused;
+  if (options_.faults.stall_after && received_ >= *options_.faults.stall_after) return DeviceState::Busy;
+  return DeviceState::Ready;
+}
+
+std::optional<std::vector<std::byte>> SimulatedDevice::request(std::span<const std::byte> command,
+                                                               std::chrono::milliseconds timeout) {
+  replies_.clear();  // stale replies belong to earlier commands
+  write(command);
+  if (replies_.empty()) {
+    throw DeviceError("simulated " + profile_.name + ": no reply within " + std::to_string(timeout.count()) +
+                      " ms");
+  }
+  const std::string r = replies_.front();
+  replies_.pop_front();
+  std::vector<std::byte> out(r.size());
+  std::transform(r.begin(), r.end(), out.begin(), [](char c) { return static_cast<std::byte>(c); });
+  return out;
+}
+
+void SimulatedDevice::close() {
+  if (closed_ || error_) return;
+  closed_ = true;
+  try {
+    if (profile_.protocol == Protocol::Gpgl)
+      gpgl_.finish();
+    else
+      hpgl_.finish();
+  } catch (const DeviceError& e) {
+    error_ = e.what();
+    throw;
+  }
+  if (down_) {
+    fail(received_, profile_.protocol == Protocol::Gpgl
+                        ? "job ends with the tool down (no M after the last D: the device would hold back "
+                          "the last segment)"
+                        : "job ends with the pen down (no PU)");
+  }
+}
+
+void SimulatedDevice::reply(const std::string& text) {
+  replies_.push_back(text + (profile_.protocol == Protocol::Gpgl ? "\x03" : "\r"));
+}
+
+void SimulatedDevice::execute(const ParsedCommand& c) {
+  if (profile_.protocol == Protocol::Gpgl)
+    execute_gpgl(c);
+  else
+    execute_hpgl(c);
+}
+
+void SimulatedDevice::pen_up() {
+  down_ = false;
+}
+
+void SimulatedDevice::move_to(Vec2 p, bool down, std::size_t offset) {
+  const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
+  if (down) {
+    if (options_.faults.no_media) fail(offset, "no media loaded: refusing to cut");
+    if (marks_failed_) fail(offset, "registration marks were not found: refusing to cut at an unknown place");
+    if (!inside(p, window_min_, window_max_))
+      fail(offset, "tool-down move to " + fmt(p) + " leaves the cut window " + fmt(window_min_) + ".." +
+                       fmt(window_max_));
+    if (!inside(p + origin, area_min_, area_max_))
+      fail(offset, "tool-down move to " + fmt(p) + " leaves the cutting area " + fmt(area_min_) + ".." +
+                       fmt(area_max_));
+    if (!down_) strokes_.push_back({holder_, force_[holder_], speed_[holder_], {pos_}});
+    strokes_.back().points.push_back(p);
+    down_ = true;
+  } else {
+    travel_units_ += norm(p - pos_);
+    down_ = false;
+  }
+  pos_ = p;
+}
+
+void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
+  const auto& p = c.params;
+  const std::string& n = c.name;
+  auto as_int = [&](double v, const char* what) {
+    if (v != std::floor(v)) fail(c.offset, std::string(what) + " must be an integer, got " + fmt(v));
+    return static_cast<int>(v);
+  };
+  auto holder_arg = [&](std::size_t i) {
+    const int h = p.size() > i ? as_int(p[i], "holder") : holder_;
+    if (h < 1 || h > profile_.holders)
+      fail(c.offset, n + ": holder " + std::to_string(h) + " does not exist (device has " +
+                         std::to_string(profile_.holders) + ")");
+    return h;
+  };
+  if (n == "ESC05") {
+    const DeviceState s = status();
+    reply(s == DeviceState::NoMedia  ? "2"
+          : s == DeviceState::Paused ? "3"
+          : s == DeviceState::Busy   ? "1"
+                                     : "0");
+    return;
+  }
+  if (n == "FG") {
+    std::string fw = profile_.firmware;
+    if (fw.size() < 17) fw.resize(17, ' ');
+    reply(fw);
+    return;
+  }
+  if (n == "ESC04") {
+    initialized_ = true;
+    return;
+  }
+  if (options_.require_initialize && !initialized_) fail(c.offset, n + " before ESC 04 (initialise)");
+  if (n == "ESC15") {
+    reply("0,0");
+  } else if (n == "TB") {
+    const int sub = as_int(p[0], "TB code");
+    if (sub == 71) {
+      reply("    0,    0");
+    } else if (sub == 50) {
+      if (p.size() != 2 || p[1] != 0)
+        fail(c.offset, "TB50 must be TB50,0 (portrait); landscape is not supported");
+    } else if (sub == 123 || sub == 124) {
+      if (!profile_.regmarks.supported) fail(c.offset, "this device has no registration-mark sensor");
+      if (p.size() != 5) fail(c.offset, "TB" + std::to_string(sub) + " takes height, width, top, left");
+      const Vec2 origin{p[3], p[4]};
+      const Vec2 far = origin + Vec2{p[1], p[2]};
+      if (options_.faults.marks_not_found || !inside(origin, area_min_, area_max_) ||
+          !inside(far, area_min_, area_max_)) {
+        marks_failed_ = true;
+        reply("    1");
+      } else {
+        mark_origin_ = origin;
+        // Window coordinates are logical from here on: relative to the top-left mark.
+        window_min_ = area_min_ - origin;
+        window_max_ = area_max_ - origin;
+        reply("    0");
+      }
+    } else if (sub != 99 && sub != 51 && sub != 52 && sub != 53 && sub != 54 && sub != 55) {
+      fail(c.offset, "unknown TB" + std::to_string(sub));
+    }
+  } else if (n == "FA" || n == "TC" || n == "[") {
+    reply("    0,    0");
+  } else if (n == "U") {
+    reply(padded(std::lround(area_max_.x)) + "," + padded(std::lround(area_max_.y)));
+  } else if (n == "TG") {
+    const int code = as_int(p[0], "mat code");
+    const Mat* loaded = options_.mat.empty() ? (profile_.mats.empty() ? nullptr : &profile_.mats.front())
+                                             : profile_.mat(options_.mat);
+    if (loaded && loaded->code != code)
+      fail(c.offset, "job expects mat TG" + std::to_string(code) + " but mat " + loaded->id + " (TG" +
+                         std::to_string(loaded->code) + ") is loaded");
+  } else if (n == "FN") {
+    if (p[0] != 0 && p[0] != 1) fail(c.offset, "FN takes 0 or 1");
+  } else if (n == "\\" || n == "Z") {
+    const Vec2 corner{p[0], p[1]};
+    const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
+    if (!inside(corner + origin, area_min_, area_max_))
+      fail(c.offset, n + " window corner " + fmt(corner) + " lies outside the cutting area " +
+                         fmt(area_min_) + ".." + fmt(area_max_));
+    (n == "Z" ? window_max_ : window_min_) = corner;
+  } else if (n == "J") {
+    const int h = as_int(p[0], "holder");
+    if (h < 0 || h > profile_.holders)
+      fail(c.offset, "J" + std::to_string(h) + ": holder does not exist (device has " +
+                         std::to_string(profile_.holders) + ")");
+    holder_ = h;
+  } else if (n == "!") {
+    const int s = as_int(p[0], "speed");
+    if (s < profile_.speed_steps.min || s > profile_.speed_steps.max)
+      fail(c.offset, "speed " + std::to_string(s) + " out of range " +
+                         std::to_string(profile_.speed_steps.min) + ".." +
+                         std::to_string(profile_.speed_steps.max));
+    speed_[holder_arg(1)] = s;
+  } else if (n == "FX") {
+    const int f = as_int(p[0], "force");
+    if (f < profile_.force_steps.min || f > profile_.force_steps.max)
+      fail(c.offset, "force " + std::to_string(f) + " out of range " +
+                         std::to_string(profile_.force_steps.min) + ".." +
+                         std::to_string(profile_.force_steps.max));
+    force_[holder_arg(1)] = f;
+  } else if (n == "FC") {
+    if (p[0] < 0 || p[0] > 46) fail(c.offset, "FC cutter offset " + fmt(p[0]) + " out of range 0..46");
+    if (p.size() == 3) holder_arg(2);
+  } else if (n == "FE" || n == "FY" || n == "FF" || n == "TF" || n == "L" || n == "FO" || n == "FW" ||
+             n == "H") {
+    // Accepted settings that change nothing the simulation tracks (lift, overcut, feed, home).
+    if (n == "H") move_to({0, 0}, false, c.offset);
+  } else if (n == "SO") {
+    if (p[0] != 0) fail(c.offset, "SO takes 0");
+  } else if (n == "M") {
+    move_to({p[0], p[1]}, false, c.offset);
+  } else if (n == "D") {
+    if (holder_ < 1) fail(c.offset, "D with no tool holder selected (J)");
+    if (!speed_.count(holder_) || !force_.count(holder_))
+      fail(c.offset,
+           "D before speed and force of holder " + std::to_string(holder_) + " were set (! and FX)");
+    for (std::size_t i = 0; i + 1 < p.size(); i += 2)
+      move_to({p[i], p[i + 1]}, true, c.offset);
+  } else {
+    fail(c.offset, "command " + n + " is not supported by this device");
+  }
+}
+
+void SimulatedDevice::execute_hpgl(const ParsedCommand& c) {
+  const auto& p = c.params;
+  const std::string& n = c.name;
+  if (n == "IN") {
+    initialized_ = true;
+    relative_ = false;
+    pen_up();
+    return;
+  }
+  if (n == "OI") {
+    reply(profile_.firmware);
+    return;
+  }
+  if (n == "OS") {
+    reply(std::to_string(8 + (status() == DeviceState::Ready ? 16 : 0) + (down_ ? 1 : 0)));
+    return;
+  }
+  if (options_.require_initialize && !initialized_) fail(c.offset, n + " before IN; (initialise)");
+  auto coords = [&](bool down) {
+    for (std::size_t i = 0; i + 1 < p.size(); i += 2) {
+      const Vec2 q{p[i], p[i + 1]};
+      move_to(relative_ ? pos_ + q : q, down, c.offset);
+    }
+  };
+  auto int_in = [&](double v, int lo, int hi, const char* what) {
+    if (v != std::floor(v) || v < lo || v > hi)
+      fail(c.offset, std::string(what) + " " + fmt(v) + " out of range " + std::to_string(lo) + ".." +
+                         std::to_string(hi));
+    return static_cast<int>(v);
+  };
+  if (n == "OH") {
+    reply(fmt(area_min_.x) + "," + fmt(area_min_.y) + "," + fmt(area_max_.x) + "," + fmt(area_max_.y));
+  } else if (n == "PA" || n == "PR") {
+    relative_ = n == "PR";
+    coords(down_);
+  } else if (n == "SP") {
+    holder_ = p.empty() ? 0 : int_in(p[0], 0, profile_.holders, "pen");
+    if (holder_ == 0) pen_up();
+  } else if (n == "VS") {
+    const int s = int_in(p[0], profile_.speed_steps.min, profile_.speed_steps.max, "velocity");
+    speed_[p.size() > 1 ? int_in(p[1], 1, profile_.holders, "pen") : holder_] = s;
+  } else if (n == "FS") {
+    if (profile_.hpgl_force_command != "FS") fail(c.offset, "this device takes no FS (force from its panel)");
+    const int f = int_in(p[0], profile_.force_steps.min, profile_.force_steps.max, "force");
+    force_[p.size() > 1 ? int_in(p[1], 1, profile_.holders, "pen") : holder_] = f;
+  } else if (n == "PU") {
+    if (p.empty())
+      pen_up();
+    else
+      coords(false);
+  } else if (n == "PD") {
+    if (holder_ < 1) fail(c.offset, "PD with no pen selected (SP)");
+    if (p.empty()) {
+      if (options_.faults.no_media) fail(c.offset, "no media loaded: refusing to cut");
+      if (!down_) strokes_.push_back({holder_, force_[holder_], speed_[holder_], {pos_}});
+      down_ = true;
+    } else {
+      coords(true);
+    }
+  } else if (n == "LT") {
+    // Line types change how a pen plotter dashes; a cutter ignores them.
+  } else {
+    fail(c.offset, "command " + n + " is not supported by this device");
+  }
+}
+
+double SimulatedDevice::down_length_mm() const {
+  double len = 0;
+  for (const SimStroke& s : strokes_) {
+    for (std::size_t i = 1; i < s.points.size(); ++i)
+      len += norm(s.points[i] - s.points[i - 1]);
+  }
+  return len / profile_.units_per_mm;
+}
+
+void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) const {
+  const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
+  auto page = [&](Vec2 d) { return device_to_page(profile_, d + origin, area_mm_); };
+  Box2 box;
+  box.add(Vec2{0, 0});
+  for (const SimStroke& s : strokes_) {
+    for (Vec2 q : s.points)
+      box.add(page(q));
+  }
+  constexpr double kBorderMm = 5;
+  const double w_mm = box.width() + 2 * kBorderMm, h_mm = box.height() + 2 * kBorderMm;
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  if (ext != ".png" && ext != ".svg")
+    throw OutputError(path.string(), "the simulated device renders .png or .svg, not \"" + ext + "\"");
+  std::map<int, int> blade_max_force;
+  for (const SimStroke& s : strokes_)
+    blade_max_force[s.holder] = std::max(blade_max_force[s.holder], s.force);
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    const bool png = ext == ".png";
+    const double scale = png ? png_dpi / 25.4 : 72.0 / 25.4;
+    cairo_surface_t* surface =
+        png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24,
+                                         std::max(1, static_cast<int>(std::ceil(w_mm * scale))),
+                                         std::max(1, static_cast<int>(std::ceil(h_mm * scale))))
+            : cairo_svg_surface_create_for_stream(write_to_stream, &out, w_mm * scale, h_mm * scale);
+    cairo_t* cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_scale(cr, scale, scale);
+    cairo_translate(cr, kBorderMm - box.min.x, kBorderMm - box.min.y);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (const SimStroke& s : strokes_) {
+      const auto it = options_.mounted.find(s.holder);
+      const ToolKind kind = it == options_.mounted.end() ? ToolKind::Blade : it->second;
+      if (kind == ToolKind::Pen)
+        cairo_set_source_rgb(cr, 0.8, 0.1, 0.1);
+      else if (kind == ToolKind::Scorer)
+        cairo_set_source_rgb(cr, 0.1, 0.55, 0.2);
+      else if (s.force < blade_max_force[s.holder])
+        cairo_set_source_rgb(cr, 0.1, 0.3, 0.8);  // a lighter blade pass: a score, not a cut
+      else
+        cairo_set_source_rgb(cr, 0, 0, 0);
+      cairo_set_line_width(cr, kind == ToolKind::Blade && s.force >= blade_max_force[s.holder] ? 0.25 : 0.2);
+      for (std::size_t i = 0; i < s.points.size(); ++i) {
+        const Vec2 q = page(s.points[i]);
+        if (i == 0)
+          cairo_move_to(cr, q.x, q.y);
+        else
+          cairo_line_to(cr, q.x, q.y);
+      }
+      cairo_stroke(cr);
+    }
+    cairo_destroy(cr);
+    cairo_surface_flush(surface);
+    cairo_status_t st = CAIRO_STATUS_SUCCESS;
+    if (png)
+      st = cairo_surface_write_to_png_stream(surface, write_to_stream, &out);
+    else
+      cairo_surface_finish(surface);
+    if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
+    cairo_surface_destroy(surface);
+    if (st != CAIRO_STATUS_SUCCESS) throw OutputError(path.string(), cairo_status_to_string(st));
+  });
+}
+
+}  // namespace foldkit::devices
