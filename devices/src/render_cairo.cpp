@@ -76,7 +76,7 @@ void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, P
       set_source(cr, style.fill);
       cairo_fill_preserve(cr);
     }
-    set_source(cr, style.stroke);
+    set_source(cr, path.tint >= 0 ? tint_colour(path.tint) : style.stroke);
     cairo_stroke(cr);
   }
 }

@@ -91,6 +91,7 @@ void write_path(std::ostream& out, const Path& path, const RoleStyle& style) {
   }
   if (path.closed) out << " Z";
   out << "\"";
+  if (path.tint >= 0) out << " stroke=\"" << colour(tint_colour(path.tint)) << "\"";
   if (path.filled) {
     out << " fill=\"" << colour(style.stroke) << "\"";
   } else if (path.closed && style.fill_closed) {

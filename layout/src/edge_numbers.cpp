@@ -10,6 +10,7 @@ namespace {
 struct Segment {
   Vec2 a, b;
   Box2 box;
+  bool fold = false;  // fold lines may be crossed when nothing else is left; outlines never
 };
 
 // What a label in one piece must keep clear of.
@@ -61,24 +62,25 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
                                 std::span<const std::string> hints, const LabelOptions& o) {
   std::vector<PieceObstacles> obstacles(pieces.size());
   for (std::size_t p = 0; p < pieces.size(); ++p) {
-    auto add = [&](Vec2 a, Vec2 b) {
+    auto add = [&](Vec2 a, Vec2 b, bool fold) {
       Box2 box;
       box.add(a);
       box.add(b);
-      obstacles[p].lines.push_back({a, b, box});
+      obstacles[p].lines.push_back({a, b, box, fold});
     };
     for (const OutlineLoop& loop : pieces[p].outline_mm)
       for (const OutlineEdge& e : loop)
-        add(e.a, e.b);
+        add(e.a, e.b, false);
     if (p < fold_lines.size())
       for (const FoldLine& f : fold_lines[p])
-        add(f.a, f.b);
+        add(f.a, f.b, true);
   }
 
-  auto clear_of_everything = [&](int p, const Polygon& box) {
+  // level 0: clear of every line and label; 1: may cross fold lines; 2: may touch the outline too.
+  auto clear_of_everything = [&](int p, const Polygon& box, int level) {
     const Box2 reach = grown(bounds_of(box), o.clearance_mm);
     for (const Segment& s : obstacles[p].lines) {
-      if (!reach.overlaps(s.box)) continue;
+      if ((level >= 1 && s.fold) || level >= 2 || !reach.overlaps(s.box)) continue;
       const std::array<Vec2, 2> seg{s.a, s.b};
       if (convex_overlap(box, seg, -o.clearance_mm)) return false;
     }
@@ -144,21 +146,28 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
       }
       if (!placed) {
         const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
-        static constexpr std::array<double, 7> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8};
-        for (double h : heights) {
-          if (placed) break;
-          const double w = full_width(h);
-          for (double lift : {o.gap_mm, o.gap_mm + 0.4 * h}) {
-            for (double t : kAlong) {
-              const Vec2 at = e.a + dir * (t * length - 0.5 * w) + up * lift;
-              Polygon box = label_box(at, dir, w, h);
-              const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
-              if (!inside_piece(side.piece, centre) || !clear_of_everything(side.piece, box)) continue;
-              label = Label{label.seam, k, side.piece, text, at, dir, h, false, false, hint, box};
-              placed = true;
-              break;
-            }
+        static constexpr std::array<double, 9> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.12, 0.88};
+        // Clear of every line first; then, rather than shrink below the legible minimum or pile onto
+        // another label, across a fold line; then touching the outline. Never on another label.
+        for (int level : {0, 1, 2}) {
+          for (double h : heights) {
             if (placed) break;
+            const double w = full_width(h);
+            for (double lift : {o.gap_mm, o.gap_mm + 0.4 * h, o.gap_mm + 0.9 * h}) {
+              for (double t : kAlong) {
+                const Vec2 at = e.a + dir * (t * length - 0.5 * w) + up * lift;
+                Polygon box = label_box(at, dir, w, h);
+                const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
+                if (!inside_piece(side.piece, centre) || !clear_of_everything(side.piece, box, level))
+                  continue;
+                label = Label{label.seam, k, side.piece, text, at, dir, h, false, false, hint, box};
+                label.over_fold = level == 1;
+                label.crowded = level == 2;
+                placed = true;
+                break;
+              }
+              if (placed) break;
+            }
           }
         }
         if (!placed) {

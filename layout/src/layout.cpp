@@ -113,6 +113,10 @@ std::vector<PackItem> pack_items_of(const Draft& d, Vec2 area_size) {
       parts.push_back({t[0], t[1], t[2]});
     for (const auto& tab : d.tabs.tab_of_seam)
       if (tab && tab->piece == static_cast<int>(p)) parts.push_back(tab->quad_mm);
+    // A label squeezed onto a tiny face may stick out of it: it must still stay clear of the
+    // neighbours and inside the printable area.
+    for (const Label& label : d.labels)
+      if (label.piece == static_cast<int>(p) && label.crowded) parts.push_back(label.box_mm);
     items[p].shape_mm = polygon_union(parts);
     std::vector<Vec2> points;
     for (const Polygon& poly : items[p].shape_mm)
@@ -242,6 +246,11 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     return attempt;
   }
   attempt.complete = true;
+  r.paper_height_mm = paper_h;
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    const PackPlacement& place = packed.placements[p];
+    r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});
+  }
 
   r.sheets.resize(packed.sheet_count);
   r.sheet_stats.resize(packed.sheet_count);
@@ -364,11 +373,17 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     r.notes.push_back(std::to_string(d.tabs.dropped.size()) +
                       " seam(s) without a glue tab (no room on either side): " + list);
   }
-  int crowded = 0;
-  for (const Label& label : d.labels)
+  int crowded = 0, over_fold = 0;
+  for (const Label& label : d.labels) {
     crowded += label.crowded;
+    over_fold += label.over_fold;
+  }
+  if (over_fold > 0)
+    r.notes.push_back(std::to_string(over_fold) +
+                      " edge number(s) cross a fold line (faces too small at this size)");
   if (crowded > 0)
-    r.notes.push_back(std::to_string(crowded) + " edge number(s) had no clear spot and touch a line");
+    r.notes.push_back(std::to_string(crowded) +
+                      " edge number(s) had no clear spot and touch a line or label");
   r.seam_number.assign(u.edges.size(), 0);
   for (std::size_t s = 0; s < d.seams.size(); ++s)
     r.seam_number[d.seams[s].edge] = d.numbers[s];

@@ -88,14 +88,16 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     // Half the free angle at each corner: the neighbour edge's tab may take the other half.
     const double free_a = clockwise_angle(e.b - e.a, prev.a - e.a);
     const double free_b = clockwise_angle(next.b - e.b, e.a - e.b);
-    const double slant_a = std::min(options.max_slant_rad, 0.5 * free_a);
-    const double slant_b = std::min(options.max_slant_rad, 0.5 * std::min(free_b, 2 * kPi));
-    double w = std::min(options.width_mm, options.width_per_length * length);
+    double w = std::min(options.width_mm, std::max(options.width_per_length * length, options.min_width_mm));
     for (; w >= options.min_width_mm - 1e-9; w *= 0.8) {
-      Polygon quad = tab_trapezoid(e.a, e.b, w, slant_a, slant_b);
-      const double actual = std::fabs(cross(normalized(e.b - e.a), quad[1] - e.a));
-      if (actual < options.min_width_mm - 1e-9) break;
-      if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
+      // Gentle slants first; steeper ones (still within half the free angle) when the edge is short.
+      for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
+        const double slant_a = std::min(cap, 0.5 * free_a), slant_b = std::min(cap, 0.5 * free_b);
+        Polygon quad = tab_trapezoid(e.a, e.b, w, slant_a, slant_b);
+        const double actual = std::fabs(cross(normalized(e.b - e.a), quad[1] - e.a));
+        if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
+        if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
+      }
     }
     return std::nullopt;
   };

@@ -39,7 +39,8 @@ struct Label {
   bool crowded = false;  ///< no clear spot: placed at the minimum size on the edge's middle anyway
   /// Text drawn just after the number in the hint role (the assembly step), "" for none.
   std::string hint;
-  Polygon box_mm;  ///< the area the label (with its hint) covers
+  Polygon box_mm;          ///< the area the label (with its hint) covers
+  bool over_fold = false;  ///< clear of outlines and labels but across a fold line
 };
 
 /// Numbers seams 1..N in outline order: piece by piece along each outline, so that the numbers of

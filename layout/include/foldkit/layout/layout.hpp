@@ -58,6 +58,15 @@ struct AssemblyStep {
   double fold_angle_rad = 0;  ///< dihedral of the seam: sharp seams come first
 };
 
+/// Where a piece went: the flat net's point p (model units) lands on sheet `sheet` at
+/// q = rotate(angle_rad) * (scale * p) + offset_mm, in a frame with y up from the paper's bottom-left;
+/// on the sheet (y down) that is (q.x, paper height - q.y). See LayoutResult::to_sheet.
+struct PiecePlacement {
+  int sheet = -1;
+  double angle_rad = 0;
+  Vec2 offset_mm;
+};
+
 struct LayoutResult {
   std::vector<Sheet> sheets;
   double scale_mm_per_unit = 1;  ///< model units -> mm
@@ -68,6 +77,16 @@ struct LayoutResult {
   std::vector<std::string> notes;      ///< e.g. which tabs were dropped and why
   /// Per mesh edge, the number printed on both sides of a glued seam (0 for other edges).
   std::vector<int> seam_number;
+  /// Per piece of the unfolding, where it went.
+  std::vector<PiecePlacement> placements;
+  double paper_height_mm = 0;
+
+  /// A point of the flat net (model units) of `piece` in its sheet's coordinates (mm, y down).
+  Vec2 to_sheet(int piece, Vec2 model_point) const {
+    const PiecePlacement& p = placements[piece];
+    const Vec2 q = rotated(model_point * scale_mm_per_unit, p.angle_rad) + p.offset_mm;
+    return {q.x, paper_height_mm - q.y};
+  }
 };
 
 /// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).

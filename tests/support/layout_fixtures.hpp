@@ -1,0 +1,51 @@
+#pragma once
+// Unfoldings for the layout tests: the bundled example meshes unfolded with the MST baseline (each
+// once per test binary), and a regular tetrahedron cut along a spanning tree, small enough to reason
+// about by hand.
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/unfold.hpp"
+#include "test_paths.hpp"
+
+namespace foldkit::test {
+
+struct UnfoldedExample {
+  unfold::Mesh mesh;
+  unfold::Unfolding unfolding;
+};
+
+/// examples/<name> loaded and unfolded with the default (MST) method, cached.
+inline const UnfoldedExample& unfolded_example(const std::string& name) {
+  static std::map<std::string, UnfoldedExample> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    UnfoldedExample ex;
+    ex.mesh = unfold::load_mesh(example_mesh(name)).mesh;
+    ex.unfolding = unfold::unfold_mesh(ex.mesh, unfold::UnfoldOptions{}).unfolding;
+    it = cache.emplace(name, std::move(ex)).first;
+  }
+  return it->second;
+}
+
+/// A regular tetrahedron with unit edges, unfolded by flatten() with the three edges at vertex 0 cut:
+/// one piece, three seams, fold angles all positive (convex).
+inline UnfoldedExample tetrahedron() {
+  const double s = 1 / std::sqrt(2.0);
+  std::vector<Vec3> v = {{s, 0, -0.5}, {-s, 0, -0.5}, {0, s, 0.5}, {0, -s, 0.5}};
+  for (Vec3& p : v)
+    p = p * s;                                                                       // edge length 1
+  std::vector<std::array<int, 3>> f = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};  // outward
+  UnfoldedExample ex;
+  ex.mesh = unfold::make_mesh(v, f, "tetrahedron");
+  std::vector<char> cut(ex.mesh.edges.size(), 0);
+  for (std::size_t e = 0; e < ex.mesh.edges.size(); ++e)
+    cut[e] = ex.mesh.edges[e].v[0] == 0 ? 1 : 0;
+  ex.unfolding = unfold::flatten(ex.mesh, cut);
+  return ex;
+}
+
+}  // namespace foldkit::test

@@ -1,0 +1,329 @@
+// layout_sheets end to end on real unfoldings: what a papercraft maker relies on. No tab overlaps a
+// piece or another tab, pieces keep apart, everything stays inside the printable area, every seam
+// carries its number twice, the scale is exact, sheets spill over, and a model too large for the
+// paper is an error that names a size that does fit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <regex>
+
+#include "foldkit/error.hpp"
+#include "foldkit/layout/layout.hpp"
+#include "foldkit/layout/polygon.hpp"
+#include "foldkit/unfold/mesh.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+namespace {
+
+const char* const kExamples[] = {"spot_350.obj", "bob_350.obj", "fish_350.obj", "penguin_500.obj"};
+
+LayoutOptions at_size(double size_mm) {
+  LayoutOptions o;
+  o.size_mm = size_mm;
+  return o;
+}
+
+// A piece's true body on its sheet (y down): its flat triangles through the reported placement.
+std::vector<Polygon> piece_body(const unfold::Unfolding& u, const LayoutResult& r, int piece) {
+  std::vector<Polygon> triangles;
+  for (int f = 0; f < u.num_faces(); ++f) {
+    if (u.piece_of_face[f] != piece) continue;
+    Polygon t;
+    // y flips on the sheet, so reverse the corners to keep them counter-clockwise for the union.
+    for (int i = 2; i >= 0; --i)
+      t.push_back(r.to_sheet(piece, u.flat[f][i]));
+    triangles.push_back(t);
+  }
+  return polygon_union(triangles);
+}
+
+std::vector<Polygon> as_ccw(const Path& p) {
+  Polygon poly = p.points_mm;
+  if (signed_area(poly) < 0) std::reverse(poly.begin(), poly.end());
+  return {poly};
+}
+
+bool inside(const Box2& box, Vec2 p, double tol = 1e-6) {
+  return p.x >= box.min.x - tol && p.x <= box.max.x + tol && p.y >= box.min.y - tol && p.y <= box.max.y + tol;
+}
+
+}  // namespace
+
+TEST(Layout, NoTabOverlapsAnyPieceOrAnotherTabOnRealMeshes) {
+  for (const char* name : kExamples) {
+    const auto& ex = test::unfolded_example(name);
+    const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+    std::vector<std::vector<Polygon>> bodies;
+    for (int p = 0; p < ex.unfolding.piece_count; ++p)
+      bodies.push_back(piece_body(ex.unfolding, r, p));
+    int tabs = 0;
+    for (std::size_t s = 0; s < r.sheets.size(); ++s) {
+      std::vector<const Path*> sheet_tabs;
+      for (const Path& p : r.sheets[s].paths)
+        if (p.role == PathRole::Tab) sheet_tabs.push_back(&p);
+      tabs += static_cast<int>(sheet_tabs.size());
+      for (std::size_t i = 0; i < sheet_tabs.size(); ++i) {
+        const auto tab = as_ccw(*sheet_tabs[i]);
+        for (int p = 0; p < ex.unfolding.piece_count; ++p) {
+          if (r.placements[p].sheet != static_cast<int>(s)) continue;
+          ASSERT_LT(intersection_area(tab, bodies[p]), 1e-4)
+              << name << ": a tab of piece " << sheet_tabs[i]->piece << " overlaps piece " << p;
+        }
+        for (std::size_t j = i + 1; j < sheet_tabs.size(); ++j)
+          ASSERT_LT(intersection_area(tab, as_ccw(*sheet_tabs[j])), 1e-4) << name << ": two tabs overlap";
+      }
+    }
+    EXPECT_EQ(tabs, r.overall.tabs) << name;
+    EXPECT_EQ(r.overall.tabs + r.overall.dropped_tabs, ex.unfolding.seam_count()) << name;
+  }
+}
+
+TEST(Layout, PiecesWithTheirTabsNeverOverlapEachOther) {
+  for (const char* name : kExamples) {
+    const auto& ex = test::unfolded_example(name);
+    const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+    for (const Sheet& sheet : r.sheets) {
+      std::vector<const Path*> cuts;
+      for (const Path& p : sheet.paths)
+        if (p.role == PathRole::Cut) cuts.push_back(&p);
+      for (std::size_t i = 0; i < cuts.size(); ++i)
+        for (std::size_t j = i + 1; j < cuts.size(); ++j) {
+          if (cuts[i]->piece == cuts[j]->piece) continue;
+          ASSERT_LT(intersection_area(as_ccw(*cuts[i]), as_ccw(*cuts[j])), 1e-4)
+              << name << ": pieces " << cuts[i]->piece << " and " << cuts[j]->piece << " overlap";
+        }
+    }
+  }
+}
+
+TEST(Layout, EverySeamCarriesItsNumberOnBothSidesAndNumbersAreUnique) {
+  for (const char* name : kExamples) {
+    const auto& ex = test::unfolded_example(name);
+    const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+    std::map<int, int> count;
+    for (const Sheet& sheet : r.sheets)
+      for (const Text& t : sheet.texts)
+        if (t.role == PathRole::Label) count[std::stoi(t.text)] += 1;
+    const int seams = ex.unfolding.seam_count();
+    ASSERT_EQ(static_cast<int>(count.size()), seams) << name;
+    for (int n = 1; n <= seams; ++n)
+      EXPECT_EQ(count[n], 2) << name << ": number " << n;
+    // The per-edge record agrees: each glued seam has its own number.
+    std::vector<int> seen;
+    for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e) {
+      EXPECT_EQ(r.seam_number[e] > 0, ex.unfolding.edges[e].glued_seam()) << name << " edge " << e;
+      if (r.seam_number[e] > 0) seen.push_back(r.seam_number[e]);
+    }
+    std::sort(seen.begin(), seen.end());
+    EXPECT_EQ(std::adjacent_find(seen.begin(), seen.end()), seen.end()) << name << ": a number is used twice";
+  }
+}
+
+TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+  // Where each numbered edge's two copies are on the sheets.
+  std::map<int, std::vector<std::pair<int, std::array<Vec2, 2>>>> copies;
+  for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e) {
+    const auto& edge = ex.unfolding.edges[e];
+    if (r.seam_number[e] == 0) continue;
+    for (int k = 0; k < 2; ++k) {
+      const int f = edge.face[k], c = edge.corner[k], piece = ex.unfolding.piece_of_face[f];
+      copies[r.seam_number[e]].push_back({r.placements[piece].sheet,
+                                          {r.to_sheet(piece, ex.unfolding.flat[f][c]),
+                                           r.to_sheet(piece, ex.unfolding.flat[f][(c + 1) % 3])}});
+    }
+  }
+  for (std::size_t s = 0; s < r.sheets.size(); ++s)
+    for (const Text& t : r.sheets[s].texts) {
+      if (t.role != PathRole::Label) continue;
+      double nearest = 1e300;
+      for (const auto& [sheet, ends] : copies[std::stoi(t.text)]) {
+        if (sheet != static_cast<int>(s)) continue;
+        // Distance from the label's anchor to the edge segment.
+        const Vec2 d = ends[1] - ends[0];
+        const double u = std::clamp(dot(t.at_mm - ends[0], d) / dot(d, d), 0.0, 1.0);
+        nearest = std::min(nearest, norm(t.at_mm - (ends[0] + d * u)));
+      }
+      EXPECT_LT(nearest, 6.0) << "label " << t.text << " is far from its edge";
+    }
+}
+
+TEST(Layout, EverythingButRegistrationMarksLiesInsideThePrintableArea) {
+  for (const char* name : kExamples) {
+    const auto& ex = test::unfolded_example(name);
+    LayoutOptions o = at_size(160);
+    o.regmarks = true;
+    o.hints = true;
+    const LayoutResult r = layout_sheets(ex.unfolding, o);
+    for (const Sheet& sheet : r.sheets) {
+      EXPECT_EQ(sheet.printable_mm.min.x, 10);
+      for (const Path& p : sheet.paths) {
+        if (p.role == PathRole::RegMark) continue;
+        for (Vec2 v : p.points_mm)
+          ASSERT_TRUE(inside(sheet.printable_mm, v))
+              << name << ": " << role_name(p.role) << " at " << v.x << "," << v.y;
+      }
+      for (const Text& t : sheet.texts)
+        ASSERT_TRUE(inside(sheet.printable_mm, t.at_mm)) << name << ": text " << t.text;
+    }
+  }
+}
+
+TEST(Layout, OneModelUnitBecomesExactlyTheScaleInMillimetres) {
+  const auto& ex = test::unfolded_example("bob_350.obj");
+  LayoutOptions o = at_size(123);
+  o.tabs = false;
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  EXPECT_NEAR(r.scale_mm_per_unit * ex.unfolding.model_extent, 123, 1e-9);
+  EXPECT_NEAR(r.size_mm, 123, 1e-9);
+  // Without tabs the outlines are the cut edges: each glued seam twice, each boundary edge once.
+  double expected = 0;
+  for (const auto& e : ex.unfolding.edges)
+    if (e.cut) expected += (e.boundary() ? 1 : 2) * e.length * r.scale_mm_per_unit;
+  double drawn = 0;
+  for (const Sheet& sheet : r.sheets)
+    for (const Path& p : sheet.paths)
+      if (p.role == PathRole::Cut)
+        for (std::size_t i = 0; i < p.points_mm.size(); ++i)
+          drawn += norm(p.points_mm[(i + 1) % p.points_mm.size()] - p.points_mm[i]);
+  EXPECT_NEAR(drawn, expected, 1e-6 * expected);
+  // And every flat edge keeps its 3D length times the scale.
+  for (std::size_t e = 0; e < ex.mesh.edges.size(); ++e) {
+    const auto& edge = ex.unfolding.edges[e];
+    const int f = edge.face[0], c = edge.corner[0], piece = ex.unfolding.piece_of_face[f];
+    const double on_paper = norm(r.to_sheet(piece, ex.unfolding.flat[f][(c + 1) % 3]) -
+                                 r.to_sheet(piece, ex.unfolding.flat[f][c]));
+    ASSERT_NEAR(on_paper, unfold::edge_length(ex.mesh, static_cast<int>(e)) * r.scale_mm_per_unit, 1e-9);
+  }
+}
+
+TEST(Layout, SmallPaperSpillsOntoMoreSheetsWithEveryPieceOnExactlyOne) {
+  const auto& ex = test::unfolded_example("fish_350.obj");
+  LayoutOptions o = at_size(200);
+  o.paper_mm = {148, 210};
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  EXPECT_GT(r.sheets.size(), 2u);
+  std::vector<int> pieces_seen(ex.unfolding.piece_count, 0);
+  for (const Sheet& sheet : r.sheets)
+    for (const Path& p : sheet.paths)
+      if (p.role == PathRole::Cut) pieces_seen[p.piece] += 1;
+  for (int p = 0; p < ex.unfolding.piece_count; ++p)
+    EXPECT_EQ(pieces_seen[p], 1) << "piece " << p << " has one outline on one sheet";
+  int stat_pieces = 0;
+  for (const SheetStats& s : r.sheet_stats)
+    stat_pieces += s.pieces;
+  EXPECT_EQ(stat_pieces, ex.unfolding.piece_count);
+}
+
+TEST(Layout, AModelTooLargeForThePaperNamesTheLargestSizeThatFits) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  try {
+    layout_sheets(ex.unfolding, at_size(3000));
+    FAIL() << "a 3 m model cannot fit A4";
+  } catch (const LayoutError& e) {
+    std::smatch m;
+    const std::string message = e.what();
+    ASSERT_TRUE(std::regex_search(message, m, std::regex("largest --size that fits is ([0-9]+)mm")))
+        << message;
+    const double largest = std::stod(m[1]);
+    EXPECT_GT(largest, 50);
+    EXPECT_NO_THROW(layout_sheets(ex.unfolding, at_size(largest))) << "the named size must fit";
+  }
+}
+
+TEST(Layout, FitPutsTheWholeModelOnOneSheetAtTheLargestScaleFound) {
+  const auto& ex = test::unfolded_example("bob_350.obj");
+  LayoutOptions o;
+  o.fit = true;
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  ASSERT_EQ(r.sheets.size(), 1u);
+  // A few percent larger no longer fits on one sheet.
+  LayoutOptions bigger = at_size(r.size_mm * 1.05);
+  EXPECT_GT(layout_sheets(ex.unfolding, bigger).sheets.size(), 1u);
+  EXPECT_GT(r.overall.coverage, 0.3);
+}
+
+TEST(Layout, StatsAddUpToTheAreasOnTheSheets) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+  double model_area = 0;
+  for (const Triangle2& t : ex.unfolding.flat)
+    model_area += signed_area(t);
+  EXPECT_NEAR(r.overall.piece_area_mm2, model_area * r.scale_mm_per_unit * r.scale_mm_per_unit,
+              1e-6 * model_area * 1e4);
+  const Box2 area = printable_area(at_size(160));
+  const double printable = area.width() * area.height();
+  for (const SheetStats& s : r.sheet_stats) {
+    EXPECT_GT(s.coverage, 0);
+    EXPECT_LT(s.coverage, 1);
+    EXPECT_NEAR(s.coverage, (s.piece_area_mm2 + s.tab_area_mm2) / printable, 1e-12);
+  }
+  EXPECT_GE(r.overall.min_label_mm, 1.8 - 1e-9);
+  EXPECT_EQ(r.overall.labels, 2 * ex.unfolding.seam_count());
+}
+
+TEST(Layout, RegistrationMarksHaveTheirKeepOutZoneToThemselves) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  LayoutOptions o = at_size(160);
+  o.regmarks = true;
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  const auto zones = regmark_keep_out(o.paper_mm, o.regmark);
+  for (const Sheet& sheet : r.sheets) {
+    int marks = 0;
+    for (const Path& p : sheet.paths) {
+      if (p.role == PathRole::RegMark) {
+        ++marks;
+        continue;
+      }
+      for (Vec2 v : p.points_mm)
+        for (const Box2& z : zones)
+          ASSERT_FALSE(inside(z, v, -1e-9)) << role_name(p.role) << " path inside a mark's keep-out zone";
+    }
+    EXPECT_EQ(marks, 3);
+  }
+}
+
+TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  LayoutOptions o = at_size(160);
+  o.hints = true;
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  ASSERT_EQ(static_cast<int>(r.assembly.size()), ex.unfolding.seam_count());
+  std::vector<int> numbers;
+  for (std::size_t i = 0; i < r.assembly.size(); ++i) {
+    EXPECT_EQ(r.assembly[i].step, static_cast<int>(i) + 1);
+    numbers.push_back(r.assembly[i].number);
+  }
+  std::sort(numbers.begin(), numbers.end());
+  for (std::size_t i = 0; i < numbers.size(); ++i)
+    EXPECT_EQ(numbers[i], static_cast<int>(i) + 1);
+  int list_lines = 0, step_marks = 0;
+  for (const Sheet& sheet : r.sheets)
+    for (const Text& t : sheet.texts) {
+      if (t.role != PathRole::Hint) continue;
+      if (t.piece < 0)
+        ++list_lines;
+      else
+        ++step_marks;
+    }
+  EXPECT_GT(list_lines, 1);
+  EXPECT_EQ(step_marks, 2 * ex.unfolding.seam_count());
+}
+
+TEST(Layout, UnusableOptionsAreLayoutErrors) {
+  const auto& ex = test::unfolded_example("spot_128.obj");
+  LayoutOptions o = at_size(-5);
+  EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
+  o = at_size(100);
+  o.margin_mm = 120;
+  EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
+  o = at_size(100);
+  o.paper_mm = {0, 297};
+  EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
+}
