@@ -47,8 +47,6 @@ std::string encode_gpgl(const Job& job) {
   cmd(out, "TG", num(job.mat_code));
   cmd(out, "FN0");
   cmd(out, "TB50,0");
-  cmd(out, "\\", pt(job.window_min));
-  cmd(out, "Z", pt(job.window_max));
   if (job.regmarks) {
     const RegMarkSearch& r = *job.regmarks;
     cmd(out, "TB99");
@@ -59,6 +57,9 @@ std::string encode_gpgl(const Job& job) {
     cmd(out, r.command, ",", num(r.extent_a), ",", num(r.extent_b), ",", num(r.origin_a), ",",
         num(r.origin_b));
   }
+  // The window is in logical coordinates, which a mark search moves to the top-left mark: set it after.
+  cmd(out, "\\", pt(job.window_min));
+  cmd(out, "Z", pt(job.window_max));
   for (const Pass& pass : job.passes) {
     const std::string h = num(pass.holder);
     cmd(out, "J", h);
