@@ -53,7 +53,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
   int best = tree.overlap_count();
   std::vector<char> best_fold = tree.fold_flags();
   std::vector<int> tabu_until(m.num_edges(), 0);
-  std::vector<int> side, attach;
+  std::vector<int> side, attach, near;
   int stall = 0;
   double next_report = 0.2;
   bool stopped = false;
@@ -79,7 +79,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
     const std::vector<int> path = tree.path(f, g);
     if (path.empty()) continue;
 
-    int best_delta = 1, best_cut = -1, best_attach = -1;
+    int best_delta = opt.max_uphill + 1, best_cut = -1, best_attach = -1;
     for (int k = 0; k < opt.candidates_per_move; ++k) {
       int e = path[uniform(rng, path.size())];
       if (tabu(e) || cons.fold(e)) continue;
@@ -103,9 +103,17 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
         }
       }
       if (attach.empty()) continue;
-      const int tries = std::min<int>(2, static_cast<int>(attach.size()));
+      // Edges sharing a vertex with e turn the side about that vertex: a small motion, so few new
+      // overlaps. These are tried first; a random edge anywhere on the side gives the long jumps.
+      near.clear();
+      for (int a : attach) {
+        const auto& av = m.edges[a].v;
+        if (av[0] == ev[0] || av[0] == ev[1] || av[1] == ev[0] || av[1] == ev[1]) near.push_back(a);
+      }
+      const int tries = std::min<int>(opt.attach_tries, static_cast<int>(attach.size()));
       for (int t = 0; t < tries; ++t) {
-        int a = attach[uniform(rng, attach.size())];
+        int a = (t == 0 && opt.near_first && !near.empty()) ? near[uniform(rng, near.size())]
+                                                            : attach[uniform(rng, attach.size())];
         const int limit = old + best_delta - 1;
         if (limit < 0) break;
         int cost = tree.reattach_cost(side, a, limit);
@@ -147,11 +155,13 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
   if (tree.overlap_count() == 0) {
     res.cut = tree.cut_flags();
     res.solved = true;
+    res.best_fold = tree.fold_flags();
     return res;
   }
   // Out of time: the best tree, cut apart where it still overlaps, so the result is always valid.
   res.overlaps_left = best;
   res.cut = folds_from_cuts(best_fold);
+  res.best_fold = std::move(best_fold);
   cut_until_no_overlap(m, res.cut, ctx.weight, cons);
   return res;
 }

@@ -21,6 +21,12 @@ struct SearchOptions {
   int restart_after = 1000;
   /// Moves an edge stays tabu after being cut or folded.
   int tabu_tenure = 12;
+  /// Re-attach edges tried per cut edge (the first next to the cut edge, the others anywhere).
+  int attach_tries = 2;
+  /// Whether the first re-attach edge tried shares a vertex with the cut edge.
+  bool near_first = true;
+  /// How many overlapping pairs the best move of a step may add (0: never go uphill).
+  int max_uphill = 0;
   EdgeConstraints constraints;
   /// Stage name reported to the progress callback.
   std::string stage = "search";
@@ -35,6 +41,8 @@ struct SearchResult {
   int moves = 0;          ///< accepted moves
   int steps = 0;          ///< steps (each evaluates up to candidates_per_move moves)
   int restarts = 0;
+  /// Fold flags of the best spanning tree seen (fewest overlapping pairs).
+  std::vector<char> best_fold;
 };
 
 /// Runs the search from the fold forest `initial_fold` (pieces of one component are first stitched
