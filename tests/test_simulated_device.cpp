@@ -8,6 +8,7 @@
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/hpgl.hpp"
 #include "foldkit/devices/plan.hpp"
+#include "foldkit/devices/send.hpp"
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
@@ -106,6 +107,182 @@ TEST(SimulatedDevice, RejectsAnUnknownCommandWithItsByteOffset) {
   SimulatedDevice dev(profiles().device("test"));
   const std::string msg = error_of([&] { dev.write(stream_bytes("\x1b\x04TG1\x03QQ5\x03")); });
   EXPECT_NE(msg.find("byte 6"), std::string::npos) << msg;
+}
+
+TEST(SimulatedDevice, RejectsADrawOutsideTheCutWindowWithItsOffset) {
+  SimulatedDevice dev(profiles().device("test"));
+  const std::string setup =
+      "\x1b\x04J1\x03!5,1\x03"
+      "FX10,1\x03M0,0\x03";
+  dev.write(stream_bytes(setup));
+  const std::string msg = error_of([&] { dev.write(stream_bytes("D3001,10\x03")); });
+  EXPECT_NE(msg.find("byte " + std::to_string(setup.size())), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cut window"), std::string::npos) << msg;
+  EXPECT_NE(error_of([&] { (void)dev.status(); }).find("stopped earlier"), std::string::npos);
+}
+
+TEST(SimulatedDevice, RejectsOutOfRangeSettingsAndDrawsBeforeToolSetUp) {
+  auto first_error = [](const std::string& stream) {
+    SimulatedDevice dev(profiles().device("test"));
+    return error_of([&] { dev.write(stream_bytes(stream)); });
+  };
+  EXPECT_NE(first_error("\x1b\x04!11,1\x03").find("speed 11 out of range 1..10"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04"
+                        "FX34,1\x03")
+                .find("force 34 out of range"),
+            std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04J3\x03").find("holder does not exist"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04J1\x03M0,0\x03"
+                        "D10,10\x03")
+                .find("before speed and force"),
+            std::string::npos);
+  EXPECT_NE(first_error("J1\x03").find("before ESC 04"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04TG2\x03").find("expects mat TG2"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04M1,2,3\x03").find("M takes 2"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x04M1,x\x03").find("not a number"), std::string::npos);
+  EXPECT_NE(first_error("\x1b\x07").find("unknown escape"), std::string::npos);
+}
+
+TEST(SimulatedDevice, RejectsAStreamThatEndsInsideACommandOrWithTheToolDown) {
+  SimulatedDevice cut_short(profiles().device("test"));
+  cut_short.write(stream_bytes("\x1b\x04J1\x03M0,0"));
+  EXPECT_NE(error_of([&] { cut_short.close(); }).find("ends inside a command"), std::string::npos);
+  SimulatedDevice left_down(profiles().device("test"));
+  left_down.write(
+      stream_bytes("\x1b\x04J1\x03!5,1\x03"
+                   "FX5,1\x03M0,0\x03"
+                   "D10,10\x03"));
+  EXPECT_NE(error_of([&] { left_down.close(); }).find("tool down"), std::string::npos);
+  SimulatedDevice hpgl(profiles().device("test-hpgl"));
+  hpgl.write(stream_bytes("IN;SP1;PU0,0;PD10,10;"));
+  EXPECT_NE(error_of([&] { hpgl.close(); }).find("pen down"), std::string::npos);
+}
+
+TEST(SimulatedDevice, ParsesHpglStrictly) {
+  SimulatedDevice dev(profiles().device("test-hpgl"));
+  EXPECT_NE(error_of([&] { dev.write(stream_bytes("IN;PA;XX1;")); }).find("HP-GL byte 6: unknown command"),
+            std::string::npos);
+  SimulatedDevice odd(profiles().device("test-hpgl"));
+  EXPECT_NE(error_of([&] { odd.write(stream_bytes("IN;SP1;PD1,2,3;")); }).find("x,y pairs"),
+            std::string::npos);
+  SimulatedDevice range(profiles().device("test-hpgl"));
+  EXPECT_NE(error_of([&] { range.write(stream_bytes("IN;SP1;VS99;")); }).find("velocity 99 out of range"),
+            std::string::npos);
+}
+
+// --- Faults: each ends with a clear DeviceError within a bounded time, never a hang. ---
+
+struct Fault {
+  std::string name;
+  SimFaults faults;
+  std::string message;
+};
+
+SimFaults faults(const std::function<void(SimFaults&)>& set) {
+  SimFaults f;
+  set(f);
+  return f;
+}
+
+class InjectedFault : public ::testing::TestWithParam<Fault> {};
+
+TEST_P(InjectedFault, EndsWithAClearMessageWithinABoundedTime) {
+  const DeviceProfile& device = profiles().device("cameo4");
+  Sheet marked = test::two_piece_sheet({15, 15});
+  test::add_regmarks(marked, {2, 2}, {110, 60});
+  PlanOptions po;
+  po.regmarks = true;
+  const std::string stream = encode_gpgl(plan_job(marked, device, profiles().medium("copy-80"), po));
+  SimOptions so;
+  so.faults = GetParam().faults;
+  SimulatedDevice dev(device, so);
+  SendOptions o;
+  o.chunk_bytes = 64;
+  o.ready_timeout = std::chrono::milliseconds(200);
+  o.poll_interval = std::chrono::milliseconds(10);
+  const auto start = std::chrono::steady_clock::now();
+  const std::string msg = error_of([&] { send_job(stream_bytes(stream), dev, o); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_NE(msg.find(GetParam().message), std::string::npos) << msg;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, InjectedFault,
+    ::testing::Values(Fault{"NotReady", faults([](SimFaults& f) { f.not_ready = true; }),
+                            "paused (not ready) for more than 0.200 s"},
+                      Fault{"NoMedia", faults([](SimFaults& f) { f.no_media = true; }), "no media loaded"},
+                      Fault{"Disconnect", faults([](SimFaults& f) { f.disconnect_after = 300; }),
+                            "disconnected after 300 bytes"},
+                      Fault{"Stall", faults([](SimFaults& f) { f.stall_after = 300; }),
+                            "accepted no data after 300 bytes"},
+                      Fault{"MarksNotFound", faults([](SimFaults& f) { f.marks_not_found = true; }),
+                            "registration marks not found"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(SendJob, SendsAWholeJobInSlicesWithProgress) {
+  const DeviceProfile& device = profiles().device("cameo4");
+  const Job job = plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"));
+  const std::string stream = encode_gpgl(job);
+  SimulatedDevice dev(device);
+  std::vector<SendProgress> seen;
+  SendOptions o;
+  o.chunk_bytes = 64;
+  o.estimated_s = job.stats.estimated_s;
+  o.progress = [&](const SendProgress& p) { seen.push_back(p); };
+  const SendResult r = send_job(stream_bytes(stream), dev, o);
+  dev.close();
+  EXPECT_FALSE(r.cancelled);
+  EXPECT_EQ(r.bytes_sent, stream.size());
+  EXPECT_EQ(r.strokes_total, job.stats.strokes);
+  EXPECT_EQ(r.strokes_done, r.strokes_total);
+  EXPECT_EQ(dev.strokes().size(), job.stats.strokes);
+  ASSERT_GT(seen.size(), 3u);
+  for (std::size_t i = 1; i < seen.size(); ++i)
+    EXPECT_GE(seen[i].bytes_sent, seen[i - 1].bytes_sent);
+  EXPECT_EQ(seen.back().bytes_sent, stream.size());
+  EXPECT_DOUBLE_EQ(seen.back().seconds_left, 0.0);
+}
+
+TEST(SendJob, StopsCleanlyOnCancelWithTheToolUpAndTheJobEnded) {
+  const DeviceProfile& device = profiles().device("test");
+  const Job job = plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"));
+  SimulatedDevice dev(device);
+  std::atomic<bool> cancel{false};
+  SendOptions o;
+  o.chunk_bytes = 32;
+  o.cancel = &cancel;
+  o.progress = [&](const SendProgress& p) {
+    if (p.strokes_done >= 2) cancel = true;
+  };
+  const SendResult r = send_job(stream_bytes(encode_gpgl(job)), dev, o);
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_GE(r.strokes_done, 2u);
+  EXPECT_LT(r.strokes_done, r.strokes_total);
+  EXPECT_NO_THROW(dev.close());  // the abort tail left the tool up and the stream complete
+  EXPECT_LT(dev.strokes().size(), job.stats.strokes);
+}
+
+TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
+  const DeviceProfile& device = profiles().device("test");
+  PlanOptions o;
+  o.draw_labels = true;
+  o.font = &font();
+  SimulatedDevice dev(device);
+  dev.write(
+      stream_bytes(encode_gpgl(plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"), o))));
+  dev.close();
+  const auto dir = test::temp_dir("sim-render");
+  dev.render(dir / "cut.png");
+  dev.render(dir / "cut.svg");
+  std::ifstream png(dir / "cut.png", std::ios::binary);
+  char magic[4] = {};
+  png.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  std::ifstream svg(dir / "cut.svg");
+  const std::string text((std::istreambuf_iterator<char>(svg)), {});
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("rgb(80%,10%,10%)"), std::string::npos) << "pen strokes drawn red";
+  EXPECT_THROW(dev.render(dir / "cut.pdf"), OutputError);
 }
 
 }  // namespace

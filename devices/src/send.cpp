@@ -1,0 +1,168 @@
+#include "foldkit/devices/send.hpp"
+
+#include <algorithm>
+#include <string>
+#include <thread>
+
+#include "foldkit/devices/command_parser.hpp"
+#include "foldkit/devices/gpgl.hpp"
+#include "foldkit/devices/hpgl.hpp"
+#include "foldkit/devices/job.hpp"
+#include "foldkit/devices/usb_ids.hpp"
+#include "foldkit/error.hpp"
+
+namespace foldkit::devices {
+namespace {
+
+enum class Query { None, Status, RegMarks, Other };
+
+struct Command {
+  std::size_t begin = 0, end = 0;
+  Query query = Query::None;
+  bool starts_stroke = false;
+};
+
+// The stream's command boundaries, which commands are queries, and where strokes start. Our own
+// parsers are used, so a malformed stream fails here, before any byte leaves.
+std::vector<Command> split(std::span<const std::byte> stream, Protocol protocol) {
+  std::vector<ParsedCommand> parsed;
+  if (protocol == Protocol::Gpgl) {
+    GpglParser p;
+    parsed = p.feed(stream);
+    p.finish();
+  } else {
+    HpglParser p;
+    parsed = p.feed(stream);
+    p.finish();
+  }
+  std::vector<Command> out(parsed.size());
+  for (std::size_t i = 0; i < parsed.size(); ++i) {
+    const ParsedCommand& c = parsed[i];
+    out[i].begin = i == 0 ? 0 : c.offset;
+    out[i].end = i + 1 < parsed.size() ? parsed[i + 1].offset : stream.size();
+    const std::string& n = c.name;
+    if (n == "ESC05") {
+      out[i].query = Query::Status;
+    } else if (n == "TB" && !c.params.empty() && (c.params[0] == 123 || c.params[0] == 124)) {
+      out[i].query = Query::RegMarks;
+    } else if (n == "FG" || n == "FA" || n == "TC" || n == "[" || n == "U" || n == "ESC15" || n == "OI" ||
+               n == "OS" || n == "OH" || (n == "TB" && !c.params.empty() && c.params[0] == 71)) {
+      out[i].query = Query::Other;
+    }
+    out[i].starts_stroke = protocol == Protocol::Gpgl ? n == "D" && i > 0 && parsed[i - 1].name == "M"
+                                                      : n == "PD" && !(i > 0 && parsed[i - 1].name == "PD");
+  }
+  return out;
+}
+
+bool cancelled(const SendOptions& o) {
+  return o.cancel && o.cancel->load();
+}
+
+const char* state_name(DeviceState s) {
+  switch (s) {
+    case DeviceState::Busy:
+      return "busy";
+    case DeviceState::Paused:
+      return "paused (not ready)";
+    default:
+      return "not ready";
+  }
+}
+
+// Waits until the device can take more: bounded by ready_timeout, interruptible by cancel.
+void wait_ready(Transport& t, DeviceState state, const SendOptions& o) {
+  const auto deadline = std::chrono::steady_clock::now() + o.ready_timeout;
+  while (true) {
+    if (state == DeviceState::NoMedia)
+      throw DeviceError(t.describe() + ": no media loaded (load the mat or the paper and try again)");
+    if (state == DeviceState::Error) throw DeviceError(t.describe() + ": the device reports an error");
+    if (state == DeviceState::Ready || state == DeviceState::Unknown || cancelled(o)) return;
+    if (std::chrono::steady_clock::now() >= deadline)
+      throw DeviceError(t.describe() + ": device " + state_name(state) + " for more than " +
+                        std::to_string(o.ready_timeout.count() / 1000.0).substr(0, 5) +
+                        " s (press its pause key, check the cover and the media)");
+    std::this_thread::sleep_for(o.poll_interval);
+    state = t.status();
+  }
+}
+
+std::string text(const std::vector<std::byte>& reply) {
+  std::string s(reply.size(), ' ');
+  std::transform(reply.begin(), reply.end(), s.begin(), [](std::byte b) { return static_cast<char>(b); });
+  return s;
+}
+
+}  // namespace
+
+SendResult send_job(std::span<const std::byte> stream, Transport& transport, const SendOptions& options) {
+  const std::vector<Command> commands = split(stream, options.protocol);
+  SendResult result;
+  for (const Command& c : commands)
+    result.strokes_total += c.starts_stroke ? 1 : 0;
+  auto report = [&] {
+    if (!options.progress) return;
+    SendProgress p;
+    p.bytes_sent = result.bytes_sent;
+    p.bytes_total = stream.size();
+    p.strokes_done = result.strokes_done;
+    p.strokes_total = result.strokes_total;
+    const double left = result.strokes_total == 0 ? 0.0
+                                                  : 1.0 - static_cast<double>(result.strokes_done) /
+                                                              static_cast<double>(result.strokes_total);
+    p.seconds_left = options.estimated_s * left;
+    options.progress(p);
+  };
+  auto abort = [&] {
+    const std::string tail = options.protocol == Protocol::Gpgl ? gpgl_abort_tail() : hpgl_abort_tail();
+    transport.write(stream_bytes(tail));
+    result.cancelled = true;
+    return result;
+  };
+
+  wait_ready(transport, transport.status(), options);
+  std::size_t chunk_begin = 0, strokes_in_chunk = 0;
+  auto flush = [&](std::size_t end) {
+    if (end > chunk_begin) {
+      transport.write(stream.subspan(chunk_begin, end - chunk_begin));
+      result.bytes_sent = end;
+      result.strokes_done += strokes_in_chunk;
+      strokes_in_chunk = 0;
+      chunk_begin = end;
+      report();
+    }
+  };
+  for (const Command& c : commands) {
+    if (cancelled(options)) {
+      flush(c.begin);
+      return abort();
+    }
+    if (c.query != Query::None) {
+      flush(c.begin);
+      const auto timeout = c.query == Query::RegMarks ? options.regmark_timeout : options.reply_timeout;
+      const auto reply = transport.request(stream.subspan(c.begin, c.end - c.begin), timeout);
+      result.bytes_sent = chunk_begin = c.end;
+      if (reply && c.query == Query::Status) wait_ready(transport, parse_gpgl_status(*reply), options);
+      if (reply && c.query == Query::RegMarks) {
+        std::string r = text(*reply);
+        r.erase(std::remove_if(r.begin(), r.end(), [](char ch) { return ch == ' ' || ch == '\x03'; }),
+                r.end());
+        if (r != "0")
+          throw DeviceError(transport.describe() +
+                            ": registration marks not found (check they are printed dark, the sheet is "
+                            "aligned with the mat's corner and the marks lie inside the rollers' reach)");
+      }
+      continue;
+    }
+    strokes_in_chunk += c.starts_stroke ? 1 : 0;
+    if (c.end - chunk_begin >= options.chunk_bytes) {
+      flush(c.end);
+      // Stop-and-wait between slices: a device that stops taking data is noticed within ready_timeout.
+      wait_ready(transport, transport.status(), options);
+    }
+  }
+  flush(stream.size());
+  return result;
+}
+
+}  // namespace foldkit::devices

@@ -1,0 +1,122 @@
+// FileTransport: regular files atomically, device nodes (a FIFO stands in for /dev/usb/lp0) directly,
+// with bounded waits.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "foldkit/devices/file_transport.hpp"
+#include "foldkit/devices/job.hpp"
+#include "foldkit/error.hpp"
+#include "test_paths.hpp"
+
+namespace foldkit::devices {
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(FileTransport, WritesARegularFileOnlyWhenClosed) {
+  const auto path = test::temp_dir("ft") / "job.gpgl";
+  FileTransport t(path);
+  EXPECT_FALSE(t.is_device_node());
+  t.write(stream_bytes("M0,0\x03"));
+  t.write(stream_bytes("D10,10\x03"));
+  EXPECT_FALSE(std::filesystem::exists(path));
+  t.close();
+  t.close();  // twice is fine
+  EXPECT_EQ(slurp(path), std::string("M0,0\x03"
+                                     "D10,10\x03"));
+  EXPECT_EQ(t.status(), DeviceState::Unknown);
+}
+
+TEST(FileTransport, LeavesNothingBehindWhenAJobFailsBeforeClose) {
+  const auto dir = test::temp_dir("ft-fail");
+  {
+    FileTransport t(dir / "job.plt");
+    t.write(stream_bytes("IN;PD"));
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(FileTransport, RefusesADirectory) {
+  EXPECT_THROW(FileTransport(test::temp_dir("ft-dir")), OutputError);
+}
+
+TEST(FileTransport, StreamsToADeviceNodeAsItComes) {
+  const auto fifo = test::temp_dir("ft-fifo") / "lp0";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    received = s.str();
+  });
+  // The reader opens the FIFO in its own time; opening for writing before it does is ENXIO.
+  std::unique_ptr<FileTransport> t;
+  for (int i = 0; i < 200 && !t; ++i) {
+    try {
+      t = std::make_unique<FileTransport>(fifo);
+    } catch (const DeviceError&) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  ASSERT_TRUE(t);
+  EXPECT_TRUE(t->is_device_node());
+  t->write(stream_bytes("IN;PU0,0;"));
+  t->close();
+  reader.join();
+  EXPECT_EQ(received, "IN;PU0,0;");
+}
+
+TEST(FileTransport, SaysSoWhenNoDeviceListensOnTheNode) {
+  const auto fifo = test::temp_dir("ft-noreader") / "lp0";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    FileTransport t(fifo);
+    FAIL() << "opened a FIFO with no reader";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("no device is listening"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FileTransport, GivesUpOnANodeThatTakesNoDataWithinTheTimeout) {
+  const auto fifo = test::temp_dir("ft-stall") / "lp0";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // A reader that never reads: the pipe fills and the device "stalls".
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  FileTransport t(fifo, std::chrono::milliseconds(100));
+  const std::string big(1 << 20, 'x');
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    t.write(stream_bytes(big));
+    FAIL() << "a stalled node took 1 MiB";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("took no data"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  ::close(reader);
+}
+
+TEST(FileTransport, WritesToACharacterDevice) {
+  FileTransport t("/dev/null");
+  EXPECT_TRUE(t.is_device_node());
+  t.write(stream_bytes("IN;"));
+  t.close();
+  EXPECT_EQ(t.describe(), "device node /dev/null");
+}
+
+}  // namespace
+}  // namespace foldkit::devices
