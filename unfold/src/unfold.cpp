@@ -4,9 +4,12 @@
 #include <string>
 
 #include "foldkit/error.hpp"
+#include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
+#include "foldkit/unfold/genetic.hpp"
 #include "foldkit/unfold/mst.hpp"
 #include "foldkit/unfold/seams.hpp"
+#include "foldkit/unfold/search.hpp"
 
 namespace foldkit::unfold {
 
@@ -23,9 +26,37 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       result.unfolding = unfold_mst(mesh, constraints);
       result.method = "mst";
       break;
-    case Method::Ga:
-    case Method::Search:
-      throw Error("--method ga and --method search are not available yet: use --method mst", ExitCode::Usage);
+    case Method::Search: {
+      const UnfoldContext ctx = make_context(mesh);
+      SearchOptions so;
+      so.seed = options.seed;
+      so.time_limit_s = options.time_limit_s;
+      so.constraints = constraints;
+      const SearchResult r = search_unfold(
+          ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight, constraints)), so, progress);
+      result.unfolding = flatten(mesh, r.cut);
+      result.method = "search";
+      result.iterations = r.steps;
+      if (!r.solved)
+        result.notes.push_back("search stopped with " + std::to_string(r.overlaps_left) +
+                               " overlapping pairs left: cut apart where they overlapped");
+      break;
+    }
+    case Method::Ga: {
+      const UnfoldContext ctx = make_context(mesh);
+      GaOptions go;
+      go.seed = options.seed;
+      go.time_limit_s = options.time_limit_s;
+      go.threads = options.threads;
+      go.population = options.population;
+      go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
+      go.constraints = constraints;
+      const GaResult r = genetic_unfold(ctx, go, progress);
+      result.unfolding = flatten(mesh, r.cut);
+      result.method = r.method;
+      result.iterations = r.generations;
+      break;
+    }
   }
   if (int components = count_components(mesh); components > 1)
     result.notes.push_back(std::to_string(components) + " connected components unfolded separately");
