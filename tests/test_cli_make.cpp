@@ -1,0 +1,148 @@
+// `foldkit make`: the README's main job end to end. PDF pages readable by poppler, PNG previews at the
+// asked resolution, SVG layers by role, the --json report, and one-line errors for bad requests.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_paths.hpp"
+
+using namespace foldkit;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool have(const char* tool) {
+  return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+// Output of a shell command (only used with paths this test made).
+std::string shell(const std::string& cmd) {
+  const fs::path out = test::temp_dir("shell") / "out";
+  const int rc = std::system((cmd + " >" + out.string() + " 2>&1").c_str());
+  return (rc == 0 ? "" : "FAILED ") + slurp(out);
+}
+
+std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s)
+    n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST(CliMake, TheReadmeCommandWritesAPdfThatPopplerReads) {
+  if (!have("pdfinfo") || !have("pdftoppm"))
+    GTEST_SKIP() << "poppler-utils (pdfinfo, pdftoppm) not installed";
+  const fs::path dir = test::temp_dir("make-pdf");
+  const fs::path pdf = dir / "spot.pdf";
+  auto run = test::run_foldkit(
+      {"make", test::example_mesh("spot_350.obj").string(), "--size", "160mm", "-o", pdf.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto report = nlohmann::json::parse(run.out);
+  const int sheets = report["sheet_count"];
+  ASSERT_GE(sheets, 1);
+  const std::string info = shell("pdfinfo " + pdf.string());
+  EXPECT_NE(info.find("Pages:           " + std::to_string(sheets)), std::string::npos) << info;
+  EXPECT_NE(info.find("595.276 x 841.89 pts (A4)"), std::string::npos) << info;
+  const std::string raster = shell("pdftoppm -r 20 -png " + pdf.string() + " " + (dir / "page").string());
+  EXPECT_EQ(raster.rfind("FAILED", 0), std::string::npos) << raster;
+  EXPECT_TRUE(fs::exists(dir / "page-1.png"));
+  EXPECT_NEAR(report["size_mm"].get<double>(), 160, 1e-9);
+}
+
+TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {
+  const fs::path dir = test::temp_dir("make-json");
+  auto run =
+      test::run_foldkit({"make", test::example_mesh("bob_350.obj").string(), "--size", "120mm", "--paper",
+                         "A5", "--landscape", "-o", (dir / "bob.pdf").string(), "--json", "--hints"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  EXPECT_DOUBLE_EQ(j["paper_mm"][0].get<double>(), 210);
+  EXPECT_DOUBLE_EQ(j["paper_mm"][1].get<double>(), 148);
+  ASSERT_EQ(j["sheets"].size(), j["sheet_count"].get<std::size_t>());
+  int pieces = 0, tabs = 0, dropped = 0;
+  for (const auto& s : j["sheets"]) {
+    EXPECT_GT(s["coverage"].get<double>(), 0);
+    EXPECT_LT(s["coverage"].get<double>(), 1);
+    pieces += s["pieces"].get<int>();
+    tabs += s["tabs"].get<int>();
+    dropped += s["dropped_tabs"].get<int>();
+  }
+  EXPECT_EQ(pieces, j["pieces"].get<int>());
+  EXPECT_EQ(tabs, j["overall"]["tabs"].get<int>());
+  EXPECT_EQ(tabs + dropped, j["seams"].get<int>());
+  EXPECT_GE(j["overall"]["min_label_mm"].get<double>(), 1.8 - 1e-9);
+  EXPECT_EQ(j["assembly"].size(), j["seams"].get<std::size_t>());
+}
+
+TEST(CliMake, PngPreviewsHaveThePixelSizeOfTheDpi) {
+  const fs::path dir = test::temp_dir("make-png");
+  const fs::path png = dir / "fish.png";
+  auto run = test::run_foldkit({"make", test::example_mesh("fish_350.obj").string(), "--fit", "-o",
+                                png.string(), "--dpi", "50", "-q"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string bytes = slurp(png);
+  ASSERT_GT(bytes.size(), 24u);
+  ASSERT_EQ(bytes.substr(1, 3), "PNG");
+  auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(bytes[at])) << 24) |
+           (std::uint32_t(std::uint8_t(bytes[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(bytes[at + 2])) << 8) | std::uint32_t(std::uint8_t(bytes[at + 3]));
+  };
+  // A4 at 50 dpi: 210 mm and 297 mm in pixels.
+  EXPECT_NEAR(be32(16), 210 / 25.4 * 50, 1.0);
+  EXPECT_NEAR(be32(20), 297 / 25.4 * 50, 1.0);
+  EXPECT_FALSE(fs::exists(dir / "fish-2.png")) << "--fit puts the model on one sheet";
+}
+
+TEST(CliMake, SvgHasOneLayerPerRole) {
+  const fs::path dir = test::temp_dir("make-svg");
+  const fs::path svg = dir / "spot.svg";
+  auto run = test::run_foldkit({"make", test::example_mesh("spot_128.obj").string(), "--size", "120mm", "-o",
+                                svg.string(), "--regmarks", "--arrows", "--hints", "-q"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string text = slurp(svg);
+  for (const char* id : {"cut", "mountain", "valley", "tab", "label", "hint", "regmark"})
+    EXPECT_NE(text.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
+  EXPECT_NE(text.find("width=\"210mm\""), std::string::npos);
+}
+
+TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
+  const fs::path dir = test::temp_dir("make-bad");
+  const std::string mesh = test::example_mesh("spot_128.obj").string();
+  const std::string out = (dir / "x.pdf").string();
+  struct Case {
+    std::vector<std::string> args;
+    int exit_code;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"make", mesh, "-o", out, "--paper", "B7"}, 2, "unknown paper"},
+      {{"make", mesh, "-o", out, "--size", "-3mm"}, 2, "positive length"},
+      {{"make", mesh, "-o", out, "--size", "12parsecs"}, 2, "positive length"},
+      {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg or .png"},
+      {{"make", mesh, "-o", out, "--size", "5m"}, 2, "positive length"},
+      {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
+      {{"make", (dir / "missing.obj").string(), "-o", out}, 3, "missing.obj"},
+  };
+  for (const Case& c : cases) {
+    auto run = test::run_foldkit(c.args);
+    EXPECT_FALSE(run.signalled);
+    EXPECT_EQ(run.exit_code, c.exit_code) << c.args.back() << ": " << run.err;
+    EXPECT_NE(run.err.find(c.says), std::string::npos) << run.err;
+    EXPECT_LE(count_lines(run.err), 2u) << run.err;
+  }
+  EXPECT_FALSE(fs::exists(out)) << "no output file after an error";
+}

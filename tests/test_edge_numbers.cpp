@@ -1,0 +1,80 @@
+// Edge numbers: unique per seam, on both sides, legible, clear of each other.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "foldkit/layout/edge_numbers.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+TEST(EdgeNumbers, SeamsAreNumberedOneToNOnce) {
+  const auto& ex = test::unfolded_example("fish_350.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 1);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  auto numbers = number_seams(pieces, seams);
+  std::sort(numbers.begin(), numbers.end());
+  for (std::size_t i = 0; i < numbers.size(); ++i)
+    ASSERT_EQ(numbers[i], static_cast<int>(i) + 1);
+}
+
+TEST(EdgeNumbers, BothSidesOfEverySeamAreLabelledLegiblyAndLabelsDoNotOverlap) {
+  for (const char* name : {"spot_350.obj", "bob_350.obj"}) {
+    const auto& ex = test::unfolded_example(name);
+    const auto pieces = scaled_pieces(ex.unfolding, 180 / ex.unfolding.model_extent);
+    const auto seams = find_seams(ex.unfolding, pieces);
+    const auto numbers = number_seams(pieces, seams);
+    const TabPlan tabs = plan_tabs(pieces, seams, TabOptions{});
+    std::vector<std::vector<FoldLine>> folds;
+    for (const ScaledPiece& p : pieces)
+      folds.push_back(fold_lines(ex.unfolding, p));
+    LabelOptions o;
+    const auto labels = place_labels(pieces, seams, numbers, tabs, folds, {}, o);
+    ASSERT_EQ(labels.size(), 2 * seams.size());
+    std::vector<int> sides(seams.size(), 0);
+    int on_tabs = 0, crowded = 0;
+    for (const Label& l : labels) {
+      EXPECT_EQ(l.text, std::to_string(numbers[l.seam]));
+      EXPECT_GE(l.height_mm, o.min_mm - 1e-9);
+      EXPECT_LE(l.height_mm, o.max_mm + 1e-9);
+      sides[l.seam] |= 1 << l.side;
+      const auto& tab = tabs.tab_of_seam[l.seam];
+      if (l.on_tab) {
+        ++on_tabs;
+        ASSERT_TRUE(tab && tab->side == l.side) << "a label on a tab only where that side has the tab";
+      }
+      crowded += l.crowded;
+    }
+    for (int s : sides)
+      EXPECT_EQ(s, 3);
+    EXPECT_GT(on_tabs, static_cast<int>(seams.size()) / 2) << name << ": most tabs carry their number";
+    EXPECT_LT(crowded, static_cast<int>(labels.size()) / 20) << name;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      for (std::size_t j = i + 1; j < labels.size(); ++j) {
+        if (labels[i].piece != labels[j].piece || labels[i].crowded || labels[j].crowded) continue;
+        ASSERT_FALSE(convex_overlap(labels[i].box_mm, labels[j].box_mm, 1e-9))
+            << name << ": labels " << labels[i].text << " and " << labels[j].text << " overlap";
+      }
+  }
+}
+
+TEST(EdgeNumbers, ALabelInsideAPieceReadsAlongItsEdgeWithItsFootTowardsIt) {
+  const auto ex = test::tetrahedron();
+  const auto pieces = scaled_pieces(ex.unfolding, 40);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const auto labels =
+      place_labels(pieces, seams, number_seams(pieces, seams), TabPlan{}, {}, {}, LabelOptions{});
+  ASSERT_EQ(labels.size(), 6u);
+  for (const Label& l : labels) {
+    const OutlineEdge& e = pieces[0].outline_mm[0][seams[l.seam].sides[l.side].index];
+    const Vec2 along = normalized(e.b - e.a);
+    EXPECT_NEAR(dot(l.dir, along), 1, 1e-9);
+    // The foot is a small gap inside the edge.
+    const double foot = cross(along, l.at_mm - e.a);
+    EXPECT_GT(foot, 0);
+    EXPECT_LT(foot, 2.0);
+    EXPECT_FALSE(l.crowded);
+  }
+}

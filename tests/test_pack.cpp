@@ -1,0 +1,133 @@
+// Packing: nothing overlaps, nothing leaves the area or enters a keep-out zone, items turn to fit,
+// spill onto new sheets, and an item too large for any sheet is reported rather than lost.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "foldkit/layout/outline.hpp"
+#include "foldkit/layout/pack.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+namespace {
+
+PackItem rect(double w, double h) {
+  return PackItem{{{{0, 0}, {w, 0}, {w, h}, {0, h}}}, {}};
+}
+
+std::vector<Polygon> placed(const PackItem& item, const PackPlacement& p) {
+  std::vector<Polygon> out = item.shape_mm;
+  for (Polygon& poly : out)
+    for (Vec2& v : poly)
+      v = p.transform.apply(v);
+  return out;
+}
+
+// Every placed item inside the area, and items on one sheet at least `gap` apart.
+void expect_valid(const std::vector<PackItem>& items, const PackResult& r, const PackOptions& o) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (r.placements[i].sheet < 0) continue;
+    const auto a = placed(items[i], r.placements[i]);
+    for (const Polygon& poly : a)
+      for (Vec2 v : poly) {
+        ASSERT_GE(v.x, o.area_mm.min.x - 1e-9);
+        ASSERT_LE(v.x, o.area_mm.max.x + 1e-9);
+        ASSERT_GE(v.y, o.area_mm.min.y - 1e-9);
+        ASSERT_LE(v.y, o.area_mm.max.y + 1e-9);
+      }
+    const auto grown = polygon_offset(a, 0.5 * o.spacing_mm - 0.01);
+    for (std::size_t j = i + 1; j < items.size(); ++j) {
+      if (r.placements[j].sheet != r.placements[i].sheet) continue;
+      const auto b = polygon_offset(placed(items[j], r.placements[j]), 0.5 * o.spacing_mm - 0.01);
+      ASSERT_LT(intersection_area(grown, b), 1e-6)
+          << "items " << i << " and " << j << " closer than the spacing";
+    }
+  }
+}
+
+}  // namespace
+
+TEST(Pack, RectanglesFillASheetThenSpillOntoTheNext) {
+  std::vector<PackItem> items;
+  for (int i = 0; i < 14; ++i)
+    items.push_back(rect(40 + i % 3 * 5, 30));
+  PackOptions o;
+  o.area_mm = {{0, 0}, {100, 100}};
+  const PackResult r = pack_items(items, o);
+  EXPECT_TRUE(r.unplaced.empty());
+  EXPECT_GE(r.sheet_count, 2);
+  EXPECT_LE(r.sheet_count, 3);
+  expect_valid(items, r, o);
+}
+
+TEST(Pack, ALongItemIsTurnedToFit) {
+  std::vector<PackItem> items = {rect(140, 10)};
+  PackOptions o;
+  o.area_mm = {{0, 0}, {60, 150}};
+  const PackResult r = pack_items(items, o);
+  ASSERT_TRUE(r.unplaced.empty());
+  EXPECT_NEAR(std::fabs(std::sin(r.placements[0].transform.angle_rad)), 1, 1e-6);
+  expect_valid(items, r, o);
+}
+
+TEST(Pack, ASmallItemNestsInTheBayOfAConcaveOne) {
+  // A cup 60 wide, 40 tall, walls 10 thick, and a 20 x 20 square that only fits inside the cup:
+  // bounding boxes alone would need two sheets.
+  PackItem cup{{{{0, 0}, {60, 0}, {60, 40}, {50, 40}, {50, 10}, {10, 10}, {10, 40}, {0, 40}}}, {}};
+  std::vector<PackItem> items = {cup, rect(20, 20)};
+  PackOptions o;
+  o.area_mm = {{0, 0}, {62, 42}};
+  o.spacing_mm = 1;
+  const PackResult r = pack_items(items, o);
+  EXPECT_TRUE(r.unplaced.empty());
+  EXPECT_EQ(r.sheet_count, 1);
+  expect_valid(items, r, o);
+}
+
+TEST(Pack, KeepOutZonesStayEmptyAndTooLargeItemsAreReported) {
+  std::vector<PackItem> items = {rect(30, 30), rect(30, 30), rect(500, 10)};
+  PackOptions o;
+  o.area_mm = {{0, 0}, {100, 100}};
+  o.keep_out_mm = {Box2{{0, 60}, {40, 100}}};
+  const PackResult r = pack_items(items, o);
+  EXPECT_EQ(r.unplaced, std::vector<int>{2});
+  EXPECT_EQ(r.placements[2].sheet, -1);
+  for (int i = 0; i < 2; ++i) {
+    const auto shape = placed(items[i], r.placements[i]);
+    for (Vec2 v : shape[0])
+      EXPECT_FALSE(v.x < 40 + o.spacing_mm - 1e-9 && v.y > 60 - o.spacing_mm + 1e-9)
+          << "inside the keep-out zone";
+  }
+}
+
+TEST(Pack, AtMostTheAllowedNumberOfSheetsIsOpened) {
+  std::vector<PackItem> items(6, rect(45, 45));
+  PackOptions o;
+  o.area_mm = {{0, 0}, {100, 100}};
+  o.max_sheets = 1;
+  const PackResult r = pack_items(items, o);
+  EXPECT_EQ(r.sheet_count, 1);
+  EXPECT_EQ(r.unplaced.size(), 2u);
+}
+
+TEST(Pack, RealPiecesPackWithoutOverlapAtHighCoverage) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 150 / ex.unfolding.model_extent);
+  std::vector<PackItem> items;
+  double area = 0;
+  for (const ScaledPiece& p : pieces) {
+    std::vector<Polygon> tris;
+    for (const Triangle2& t : p.triangles_mm)
+      tris.push_back({t[0], t[1], t[2]});
+    items.push_back({polygon_union(tris), {}});
+    area += p.area_mm2;
+  }
+  PackOptions o;
+  o.area_mm = {{10, 10}, {200, 287}};
+  const PackResult r = pack_items(items, o);
+  ASSERT_TRUE(r.unplaced.empty());
+  expect_valid(items, r, o);
+  EXPECT_GT(area / (r.sheet_count * 190.0 * 277.0), 0.3);
+}

@@ -1,0 +1,79 @@
+// Glue tabs: trapezoids outside their edge, one per seam, never over their own piece or its other tabs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "foldkit/layout/polygon.hpp"
+#include "foldkit/layout/tabs.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+TEST(Tabs, ATrapezoidLiesOutsideItsEdgeWithSlantedEnds) {
+  const Polygon quad = tab_trapezoid({0, 0}, {10, 0}, 3, M_PI / 4, M_PI / 4);
+  ASSERT_EQ(quad.size(), 4u);
+  EXPECT_GT(signed_area(quad), 0) << "counter-clockwise";
+  EXPECT_NEAR(quad[1].x, 3, 1e-9);
+  EXPECT_NEAR(quad[1].y, -3, 1e-9) << "outside: to the right of a->b";
+  EXPECT_NEAR(quad[2].x, 7, 1e-9);
+  EXPECT_NEAR(signed_area(quad), 3 * (10 + 4) / 2.0, 1e-9);
+}
+
+TEST(Tabs, OnAShortEdgeTheTabNarrowsInsteadOfComingToAPoint) {
+  const Polygon quad = tab_trapezoid({0, 0}, {4, 0}, 5, M_PI / 4, M_PI / 4);
+  EXPECT_LT(std::fabs(quad[1].y), 2.0);
+  EXPECT_GT(quad[2].x - quad[1].x, 0.3) << "the outer side keeps some length";
+}
+
+TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
+  for (const char* name : {"spot_350.obj", "fish_350.obj", "penguin_500.obj"}) {
+    const auto& ex = test::unfolded_example(name);
+    const auto pieces = scaled_pieces(ex.unfolding, 160 / ex.unfolding.model_extent);
+    const auto seams = find_seams(ex.unfolding, pieces);
+    const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
+    ASSERT_EQ(plan.tab_of_seam.size(), seams.size());
+    std::vector<std::vector<Polygon>> body(pieces.size()), tabs(pieces.size());
+    for (const ScaledPiece& p : pieces) {
+      std::vector<Polygon> tris;
+      for (const Triangle2& t : p.triangles_mm)
+        tris.push_back({t[0], t[1], t[2]});
+      body[p.index] = polygon_union(tris);
+    }
+    int placed = 0;
+    for (std::size_t s = 0; s < seams.size(); ++s) {
+      const auto& tab = plan.tab_of_seam[s];
+      const bool dropped =
+          std::find(plan.dropped.begin(), plan.dropped.end(), static_cast<int>(s)) != plan.dropped.end();
+      ASSERT_NE(tab.has_value(), dropped);
+      if (!tab) continue;
+      ++placed;
+      EXPECT_EQ(tab->piece, seams[s].sides[tab->side].piece);
+      EXPECT_GE(tab->width_mm, TabOptions{}.min_width_mm - 1e-9);
+      EXPECT_LE(tab->width_mm, TabOptions{}.width_mm + 1e-9);
+      const std::vector<Polygon> one = {tab->quad_mm};
+      ASSERT_LT(intersection_area(one, body[tab->piece]), 1e-4)
+          << name << ": tab of seam " << s << " covers its piece";
+      for (const Polygon& other : tabs[tab->piece])
+        ASSERT_LT(intersection_area(one, std::vector<Polygon>{other}), 1e-4) << name << ": tabs overlap";
+      tabs[tab->piece].push_back(tab->quad_mm);
+    }
+    // Dropping is the last resort: a seam between two pieces always finds room on one side; only the
+    // narrow notches and slits inside one piece (the MST baseline makes some) can lack it.
+    for (int s : plan.dropped)
+      EXPECT_EQ(seams[s].sides[0].piece, seams[s].sides[1].piece) << name << ": seam " << s;
+    EXPECT_GT(placed, 0.8 * seams.size()) << name;
+  }
+}
+
+TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
+  // The tetrahedron's outline pairs each seam with its neighbour: a b b^-1 c c^-1 a^-1 seen around the
+  // big triangle. Every seam gets one tab, and no two tabs sit side by side on both halves of a zip.
+  const auto ex = test::tetrahedron();
+  const auto pieces = scaled_pieces(ex.unfolding, 30);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
+  EXPECT_TRUE(plan.dropped.empty());
+  for (const auto& tab : plan.tab_of_seam)
+    ASSERT_TRUE(tab.has_value());
+}
