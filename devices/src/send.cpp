@@ -71,7 +71,8 @@ const char* state_name(DeviceState s) {
 }
 
 // Waits until the device can take more: bounded by ready_timeout, interruptible by cancel.
-void wait_ready(Transport& t, DeviceState state, const SendOptions& o) {
+void wait_ready(Transport& t, DeviceState state, const SendOptions& o,
+                const std::function<void(DeviceState)>& waiting) {
   const auto deadline = std::chrono::steady_clock::now() + o.ready_timeout;
   while (true) {
     if (state == DeviceState::NoMedia)
@@ -82,6 +83,7 @@ void wait_ready(Transport& t, DeviceState state, const SendOptions& o) {
       throw DeviceError(t.describe() + ": device " + state_name(state) + " for more than " +
                         std::to_string(o.ready_timeout.count() / 1000.0).substr(0, 5) +
                         " s (press its pause key, check the cover and the media)");
+    waiting(state);
     std::this_thread::sleep_for(o.poll_interval);
     state = t.status();
   }
@@ -100,9 +102,10 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
   SendResult result;
   for (const Command& c : commands)
     result.strokes_total += c.starts_stroke ? 1 : 0;
-  auto report = [&] {
+  auto report = [&](DeviceState waiting_for) {
     if (!options.progress) return;
     SendProgress p;
+    p.waiting_for = waiting_for;
     p.bytes_sent = result.bytes_sent;
     p.bytes_total = stream.size();
     p.strokes_done = result.strokes_done;
@@ -113,14 +116,19 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
     p.seconds_left = options.estimated_s * left;
     options.progress(p);
   };
+  // The abort tail is only for a device that has been set up: one still in the handshake is left alone
+  // (a strict device rejects end-of-job commands before its initialisation).
+  bool set_up = false;
   auto abort = [&] {
+    result.cancelled = true;
+    if (!set_up) return result;
     const std::string tail = options.protocol == Protocol::Gpgl ? gpgl_abort_tail() : hpgl_abort_tail();
     transport.write(stream_bytes(tail));
-    result.cancelled = true;
     return result;
   };
 
-  wait_ready(transport, transport.status(), options);
+  const auto wait = [&](DeviceState state) { wait_ready(transport, state, options, report); };
+  wait(transport.status());
   std::size_t chunk_begin = 0, strokes_in_chunk = 0;
   auto flush = [&](std::size_t end) {
     if (end > chunk_begin) {
@@ -129,7 +137,7 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
       result.strokes_done += strokes_in_chunk;
       strokes_in_chunk = 0;
       chunk_begin = end;
-      report();
+      report(DeviceState::Ready);
     }
   };
   for (const Command& c : commands) {
@@ -142,7 +150,7 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
       const auto timeout = c.query == Query::RegMarks ? options.regmark_timeout : options.reply_timeout;
       const auto reply = transport.request(stream.subspan(c.begin, c.end - c.begin), timeout);
       result.bytes_sent = chunk_begin = c.end;
-      if (reply && c.query == Query::Status) wait_ready(transport, parse_gpgl_status(*reply), options);
+      if (reply && c.query == Query::Status) wait(parse_gpgl_status(*reply));
       if (reply && c.query == Query::RegMarks) {
         std::string r = text(*reply);
         r.erase(std::remove_if(r.begin(), r.end(), [](char ch) { return ch == ' ' || ch == '\x03'; }),
@@ -155,10 +163,11 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
       continue;
     }
     strokes_in_chunk += c.starts_stroke ? 1 : 0;
+    set_up = true;
     if (c.end - chunk_begin >= options.chunk_bytes) {
       flush(c.end);
       // Stop-and-wait between slices: a device that stops taking data is noticed within ready_timeout.
-      wait_ready(transport, transport.status(), options);
+      wait(transport.status());
     }
   }
   flush(stream.size());

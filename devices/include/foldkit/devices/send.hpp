@@ -18,6 +18,8 @@ struct SendProgress {
   std::size_t bytes_sent = 0, bytes_total = 0;
   std::size_t strokes_done = 0, strokes_total = 0;
   double seconds_left = 0;  ///< from the job's estimate, scaled by the strokes still to do
+  /// Ready while bytes flow; Busy, Paused (or Unknown) while waiting for the device to take more.
+  DeviceState waiting_for = DeviceState::Ready;
 };
 
 struct SendOptions {

@@ -1,0 +1,386 @@
+// `foldkit cut MESH --device cameo4 --media cardstock-220`: load -> unfold -> lay out -> plan -> encode ->
+// send, to a USB cutter, a file or device node (-o), or the simulated device (--dry-run, or no --device).
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "foldkit/devices/file_transport.hpp"
+#include "foldkit/devices/gpgl.hpp"
+#include "foldkit/devices/hpgl.hpp"
+#include "foldkit/devices/plan.hpp"
+#include "foldkit/devices/render.hpp"
+#include "foldkit/devices/send.hpp"
+#include "foldkit/devices/simulated_device.hpp"
+// usb_transport lands separately (the USB engineer's part); until it is in the tree, cut sends to files,
+// device nodes and the simulated device only. Remove this guard once it has landed.
+#if __has_include("foldkit/devices/usb_transport.hpp")
+#include "foldkit/devices/usb_transport.hpp"
+#define FOLDKIT_CUT_HAS_USB 1
+#endif
+#include "foldkit/error.hpp"
+#include "layout_options.hpp"
+#include "pipeline.hpp"
+#include "profile_options.hpp"
+
+namespace foldkit::cli {
+namespace {
+
+// The one process-wide flag a signal handler may touch: SIGINT sets it, send_job polls it between
+// slices and stops cleanly (tool up, end of job). Only the handler and run_cut see it.
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_sigint(int) {
+  g_interrupted.store(true);
+}
+
+// Installs the SIGINT handler for the lifetime of a send, restoring the previous one after.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    g_interrupted = false;
+    struct sigaction sa {};
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &previous_);
+  }
+  ~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
+struct CutArgs {
+  std::string mesh;
+  std::string device, media = "cardstock-220", mat;
+  bool dry_run = false;
+  std::string output, preview;
+  std::vector<std::string> profiles;
+  std::string usb_vid, usb_pid;
+  bool labels = false;
+  std::string fold_method;
+  double overcut_mm = 0.5;
+  int sheet = 0;
+  double ready_timeout_s = 120;
+  std::vector<std::string> sim_faults;
+  bool json = false, quiet = false;
+  UnfoldCliOptions unfold;
+  LayoutCliOptions layout;
+};
+
+std::uint16_t parse_usb_id(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  unsigned long v = 0;
+  try {
+    v = std::stoul(text, &used, 16);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || v > 0xffff)
+    throw Error(std::string(option) + " " + text + ": expected a hexadecimal USB id such as 1137",
+                ExitCode::Usage);
+  return static_cast<std::uint16_t>(v);
+}
+
+std::string duration(double s) {
+  char buf[32];
+  const long t = std::lround(s);
+  if (t >= 60)
+    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%lds", t);
+  return buf;
+}
+
+std::string lower_ext(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// --sim-fault NAME[=BYTES]: what the simulated device is told to do wrong (for trying out error handling).
+devices::SimFaults parse_faults(const std::vector<std::string>& specs) {
+  devices::SimFaults f;
+  for (const std::string& spec : specs) {
+    const auto eq = spec.find('=');
+    const std::string name = spec.substr(0, eq);
+    std::optional<std::size_t> bytes;
+    if (eq != std::string::npos) {
+      try {
+        bytes = std::stoul(spec.substr(eq + 1));
+      } catch (const std::exception&) {
+        throw Error("--sim-fault " + spec + ": expected a byte count after '='", ExitCode::Usage);
+      }
+    }
+    const bool takes_bytes = name == "disconnect" || name == "stall";
+    if (takes_bytes != bytes.has_value())
+      throw Error("--sim-fault " + spec +
+                      (takes_bytes ? ": give the byte count, e.g. " + name + "=500" : ": takes no value"),
+                  ExitCode::Usage);
+    if (name == "not-ready")
+      f.not_ready = true;
+    else if (name == "no-media")
+      f.no_media = true;
+    else if (name == "marks-not-found")
+      f.marks_not_found = true;
+    else if (name == "disconnect")
+      f.disconnect_after = bytes;
+    else if (name == "stall")
+      f.stall_after = bytes;
+    else
+      throw Error("--sim-fault " + spec +
+                      ": unknown fault (not-ready, no-media, marks-not-found, disconnect=N, stall=N)",
+                  ExitCode::Usage);
+  }
+  return f;
+}
+
+struct SheetReport {
+  devices::JobStats stats;
+  std::size_t bytes = 0;
+  std::string target;
+  std::optional<double> simulated_cut_mm, simulated_travel_mm;
+  std::vector<std::string> notes;
+};
+
+}  // namespace
+
+void setup_cut(CLI::App& app) {
+  auto args = std::make_shared<CutArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "cut",
+      "Unfold a mesh, lay it out and send it to a cutting plotter (or a file, or the simulated device)");
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("--device", args->device, "Device profile id (see `foldkit profiles`); none: simulated");
+  cmd->add_option("--media", args->media, "Media profile id (see `foldkit profiles`)")->capture_default_str();
+  cmd->add_option("--mat", args->mat, "Mat id of the device (default: its first)");
+  cmd->add_flag("--dry-run", args->dry_run,
+                "Send to the simulated device: check every command, write its rendering and job statistics");
+  cmd->add_option("-o,--output", args->output,
+                  "Write the stream instead of sending: job.plt / job.hpgl (HP-GL), job.gpgl (GP-GL), or a "
+                  "device node such as /dev/usb/lp0");
+  cmd->add_option("--preview", args->preview,
+                  "Rendering of what the simulated device cut, scored and drew (.png or .svg); default "
+                  "<mesh>-cut.png with --dry-run");
+  add_profile_options(*cmd, args->profiles);
+  cmd->add_option("--usb-vid", args->usb_vid, "USB vendor id (hex) overriding the profile's");
+  cmd->add_option("--usb-pid", args->usb_pid, "USB product id (hex) overriding the profile's");
+  cmd->add_flag("--draw-labels", args->labels,
+                "Draw edge numbers and labels with a pen in the second holder");
+  cmd->add_option("--fold-method", args->fold_method,
+                  "How folds are marked: scorer, reduced-force, perforate, none (default: profile and media)")
+      ->check(CLI::IsMember({"scorer", "reduced-force", "perforate", "none"}));
+  cmd->add_option("--overcut", args->overcut_mm, "Closed cuts continue this far past their start, mm")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--sheet", args->sheet, "Only this sheet (1-based); default all")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--ready-timeout", args->ready_timeout_s,
+                  "Longest wait for a busy or paused device before giving up, seconds")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  cmd->add_option("--sim-fault", args->sim_faults,
+                  "Make the simulated device fail: not-ready, no-media, marks-not-found, disconnect=BYTES, "
+                  "stall=BYTES (repeatable)");
+  cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+  add_layout_options(*cmd, args->layout);
+  add_unfold_options(*cmd, args->unfold);
+
+  cmd->callback([args] {
+    const devices::SimFaults faults = parse_faults(args->sim_faults);
+    const devices::ProfileSet profiles = load_cli_profiles(args->profiles);
+    const bool simulated = args->dry_run || (args->device.empty() && args->output.empty());
+    if (!args->sim_faults.empty() && !simulated)
+      throw Error("--sim-fault needs the simulated device (--dry-run)", ExitCode::Usage);
+    if (args->device.empty() && !args->output.empty())
+      throw Error("-o needs --device: the stream's language and units depend on the plotter",
+                  ExitCode::Usage);
+    // A typical two-holder cutter stands in when no device is named.
+    const std::string device_id = args->device.empty() ? "cameo4" : args->device;
+    devices::DeviceProfile device = profiles.device(device_id);
+    const devices::MediaProfile& media = profiles.medium(args->media);
+    if (!args->usb_vid.empty()) device.usb_vendor = parse_usb_id(args->usb_vid, "--usb-vid");
+    if (!args->usb_pid.empty()) device.usb_product = parse_usb_id(args->usb_pid, "--usb-pid");
+    if (!args->output.empty() && !args->dry_run) {
+      const std::string ext = lower_ext(args->output);
+      const bool hpgl_ext = ext == ".plt" || ext == ".hpgl" || ext == ".hpg";
+      if ((hpgl_ext && device.protocol != devices::Protocol::Hpgl) ||
+          (ext == ".gpgl" && device.protocol != devices::Protocol::Gpgl))
+        throw Error(
+            "-o " + args->output + ": " + device.name + " speaks " +
+                (device.protocol == devices::Protocol::Gpgl ? "GP-GL (use .gpgl)" : "HP-GL (use .plt)"),
+            ExitCode::Usage);
+    }
+    if (args->device.empty() && !args->json)
+      std::cerr << "foldkit: no --device given: sending to a simulated " << device.name
+                << " (nothing is cut; name a device to cut for real)\n";
+
+    finish_unfold_options(args->unfold);
+    layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    ProgressLine line(!args->quiet && !args->json);
+    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    const std::vector<Sheet>& sheets = run.layout.sheets;
+    if (args->sheet > static_cast<int>(sheets.size()))
+      throw Error("--sheet " + std::to_string(args->sheet) + ": the layout has " +
+                      std::to_string(sheets.size()) + " sheet(s)",
+                  ExitCode::Usage);
+
+    std::optional<devices::StrokeFont> font;
+    if (args->labels) font = devices::load_stroke_font(devices::default_stroke_font_path());
+    devices::PlanOptions plan;
+    plan.mat = args->mat;
+    plan.draw_labels = args->labels;
+    plan.font = font ? &*font : nullptr;
+    plan.regmarks = layout_options.regmarks;
+    plan.overcut_mm = args->overcut_mm;
+    if (args->fold_method == "scorer") plan.fold_method = devices::FoldMethod::Scorer;
+    if (args->fold_method == "reduced-force") plan.fold_method = devices::FoldMethod::ReducedForce;
+    if (args->fold_method == "perforate") plan.fold_method = devices::FoldMethod::Perforate;
+    if (args->fold_method == "none") plan.fold_method = devices::FoldMethod::None;
+
+    const std::string preview = !args->preview.empty() ? args->preview
+                                : simulated ? std::filesystem::path(args->mesh).stem().string() + "-cut.png"
+                                            : "";
+    std::vector<SheetReport> reports;
+    for (std::size_t i = 0; i < sheets.size(); ++i) {
+      if (args->sheet > 0 && i + 1 != static_cast<std::size_t>(args->sheet)) continue;
+      line.update("planning sheet " + std::to_string(i + 1));
+      // Every stroke is planned and bounds-checked for this sheet before a byte is sent.
+      const devices::Job job = devices::plan_job(sheets[i], device, media, plan);
+      const std::string stream =
+          job.protocol == devices::Protocol::Gpgl ? devices::encode_gpgl(job) : devices::encode_hpgl(job);
+      SheetReport rep;
+      rep.stats = job.stats;
+      rep.bytes = stream.size();
+      rep.notes = job.notes;
+
+      devices::SendOptions send;
+      send.protocol = job.protocol;
+      send.estimated_s = job.stats.estimated_s;
+      send.ready_timeout = std::chrono::milliseconds(std::lround(args->ready_timeout_s * 1000));
+      const std::string sheet_label =
+          sheets.size() > 1 ? "sheet " + std::to_string(i + 1) + "/" + std::to_string(sheets.size()) + ": "
+                            : "";
+      send.progress = [&](const devices::SendProgress& p) {
+        if (p.waiting_for == devices::DeviceState::Paused) {
+          line.update(sheet_label +
+                      "waiting: the device is paused or not ready (press its pause key; Ctrl-C stops)");
+          return;
+        }
+        if (p.waiting_for == devices::DeviceState::Busy) {
+          line.update(sheet_label + "waiting for the device to take more data");
+          return;
+        }
+        line.update(sheet_label + "sent " +
+                    std::to_string(100 * p.bytes_sent / std::max<std::size_t>(p.bytes_total, 1)) + "%, " +
+                    std::to_string(p.strokes_done) + "/" + std::to_string(p.strokes_total) + " strokes, ~" +
+                    duration(p.seconds_left) + " left");
+      };
+      std::unique_ptr<devices::Transport> transport;
+      devices::SimulatedDevice* sim = nullptr;
+      if (simulated) {
+        devices::SimOptions so;
+        so.mat = args->mat;
+        so.faults = faults;
+        for (const devices::Pass& p : job.passes)
+          so.mounted[p.holder] = p.tool;
+        auto dev = std::make_unique<devices::SimulatedDevice>(device, so);
+        sim = dev.get();
+        transport = std::move(dev);
+      } else if (!args->output.empty()) {
+        transport = std::make_unique<devices::FileTransport>(devices::sheet_file_path(args->output, i));
+      } else {
+        if (device.usb_vendor == 0)
+          throw DeviceError(
+              device.name +
+              " has no USB id: use -o /dev/usb/lp0 (or a serial port), or --usb-vid and --usb-pid");
+        if (i > 0 || (args->sheet == 0 && sheets.size() > 1)) {
+          line.clear();
+          std::cerr << "Load sheet " << i + 1 << " of " << sheets.size()
+                    << " and press Enter (Ctrl-C stops) ";
+          std::string ignored;
+          if (!std::getline(std::cin, ignored))
+            throw Error("stopped before sheet " + std::to_string(i + 1), ExitCode::Interrupted);
+        }
+#ifdef FOLDKIT_CUT_HAS_USB
+        devices::UsbSelector sel;
+        sel.id = {device.usb_vendor, device.usb_product, device.name};
+        transport = devices::open_usb_cutter(sel);
+#else
+        throw DeviceError(
+            "this build sends to USB cutters through their printer node only: use -o /dev/usb/lp0");
+#endif
+      }
+      rep.target = transport->describe();
+      SigintGuard guard;
+      send.cancel = &g_interrupted;
+      const devices::SendResult result = devices::send_job(devices::stream_bytes(stream), *transport, send);
+      transport->close();
+      line.clear();
+      if (result.cancelled) {
+        throw Error("stopped by Ctrl-C after " + std::to_string(result.strokes_done) + " of " +
+                        std::to_string(result.strokes_total) + " strokes of " +
+                        (sheet_label.empty() ? "the sheet" : sheet_label.substr(0, sheet_label.size() - 2)) +
+                        " (" + rep.target +
+                        "): the tool was raised and the job ended; the pieces cut so far "
+                        "are usable, the rest of the sheet is not cut",
+                    ExitCode::Interrupted);
+      }
+      if (sim) {
+        rep.simulated_cut_mm = sim->down_length_mm();
+        rep.simulated_travel_mm = sim->travel_mm();
+        if (!preview.empty()) sim->render(devices::sheet_file_path(preview, i));
+      }
+      reports.push_back(std::move(rep));
+    }
+    line.clear();
+
+    if (args->json) {
+      nlohmann::json js = nlohmann::json::array();
+      for (const SheetReport& r : reports) {
+        nlohmann::json j{{"target", r.target},
+                         {"bytes", r.bytes},
+                         {"strokes", r.stats.strokes},
+                         {"cut_length_mm", r.stats.cut_length_mm},
+                         {"travel_before_mm", r.stats.travel_before_mm},
+                         {"travel_after_mm", r.stats.travel_after_mm},
+                         {"estimated_s", r.stats.estimated_s},
+                         {"notes", r.notes}};
+        if (r.simulated_cut_mm) j["simulated_tool_down_mm"] = *r.simulated_cut_mm;
+        if (r.simulated_travel_mm) j["simulated_travel_mm"] = *r.simulated_travel_mm;
+        js.push_back(j);
+      }
+      std::cout << nlohmann::json{{"file", args->mesh},
+                                  {"device", device.id},
+                                  {"media", media.id},
+                                  {"simulated", simulated},
+                                  {"sheets", js}}
+                       .dump(2)
+                << "\n";
+      return;
+    }
+    for (std::size_t k = 0; k < reports.size(); ++k) {
+      const SheetReport& r = reports[k];
+      for (const auto& n : r.notes)
+        std::cerr << "note: " << n << "\n";
+      std::printf(
+          "%s -> %s: %zu strokes, tool down %.0f mm, pen-up travel %.0f mm (%.0f mm in sheet order), ~%s\n",
+          args->mesh.c_str(), r.target.c_str(), r.stats.strokes, r.stats.cut_length_mm,
+          r.stats.travel_after_mm, r.stats.travel_before_mm, duration(r.stats.estimated_s).c_str());
+    }
+    if (simulated && !preview.empty())
+      std::printf("rendering of the simulated cut: %s%s\n", preview.c_str(),
+                  reports.size() > 1 ? " (one per sheet)" : "");
+  });
+}
+
+}  // namespace foldkit::cli

@@ -1,0 +1,198 @@
+// `foldkit cut` and `foldkit profiles` end to end: dry runs on the simulated device, streams to files,
+// bad profiles, out-of-area sheets, injected faults (clear message, non-zero exit, bounded time) and Ctrl-C.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_paths.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Runs foldkit in `dir` with arguments (each single-quoted), capturing stdout and stderr.
+CliRun run_foldkit(const fs::path& dir, const std::vector<std::string>& args) {
+  std::string cmd = "cd '" + dir.string() + "' && '" + foldkit::test::foldkit_binary().string() + "'";
+  for (const auto& a : args)
+    cmd += " '" + a + "'";
+  cmd += " >'" + (dir / "out.txt").string() + "' 2>'" + (dir / "err.txt").string() + "'";
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  r.out = slurp(dir / "out.txt");
+  r.err = slurp(dir / "err.txt");
+  return r;
+}
+
+std::string mesh() {
+  return foldkit::test::example_mesh("spot_128.obj").string();
+}
+
+TEST(CliProfiles, ListsEveryDeviceAndMedium) {
+  const auto dir = foldkit::test::temp_dir("cli-profiles");
+  const CliRun r = run_foldkit(dir, {"profiles", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::set<std::string> devices, media;
+  for (const auto& d : j["devices"])
+    devices.insert(d["id"]);
+  for (const auto& m : j["media"])
+    media.insert(m["id"]);
+  for (const char* id :
+       {"cameo3", "cameo4", "cameo5", "portrait3", "curio", "ce6000", "roland-gx24", "generic-hpgl"})
+    EXPECT_TRUE(devices.count(id)) << id;
+  for (const char* id : {"copy-80", "cardstock-160", "cardstock-220", "cardstock-300"})
+    EXPECT_TRUE(media.count(id)) << id;
+}
+
+TEST(CliProfiles, NamesTheFileAndKeyOfABadUserProfile) {
+  const auto dir = foldkit::test::temp_dir("cli-badprofile");
+  std::ofstream(dir / "mine.toml")
+      << "kind = \"media\"\nname = \"x\"\nthickness_mm = 0.2\nwieght = 3\n"
+      << "[cut]\nforce_gf = 1\nspeed_mm_s = 1\n[score]\nforce_gf = 1\nspeed_mm_s = 1\n"
+      << "[draw]\nforce_gf = 1\nspeed_mm_s = 1\n";
+  const CliRun r = run_foldkit(dir, {"profiles", "--profile", (dir / "mine.toml").string()});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("mine.toml: wieght: unknown key"), std::string::npos) << r.err;
+}
+
+TEST(CliCut, DryRunReportsCutLengthTravelAndTimeAndWritesTheRendering) {
+  const auto dir = foldkit::test::temp_dir("cli-dry");
+  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--media", "cardstock-220",
+                                     "--dry-run", "--json", "--preview", "cut.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["simulated"].get<bool>());
+  ASSERT_GE(j["sheets"].size(), 1u);
+  const auto& s = j["sheets"][0];
+  EXPECT_GT(s["cut_length_mm"].get<double>(), 100);
+  EXPECT_LT(s["travel_after_mm"].get<double>(), s["travel_before_mm"].get<double>());
+  EXPECT_GT(s["estimated_s"].get<double>(), 0);
+  EXPECT_NEAR(s["simulated_tool_down_mm"].get<double>(), s["cut_length_mm"].get<double>(), 1);
+  EXPECT_TRUE(fs::exists(dir / "cut.svg"));
+}
+
+TEST(CliCut, UsesTheSimulatedDeviceAndSaysSoWhenNoDeviceIsNamed) {
+  const auto dir = foldkit::test::temp_dir("cli-nodevice");
+  const CliRun r = run_foldkit(dir, {"cut", mesh()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("no --device given: sending to a simulated"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "spot_128-cut.png"));
+}
+
+TEST(CliCut, WritesTheStreamToAFileInTheDevicesLanguage) {
+  const auto dir = foldkit::test::temp_dir("cli-out");
+  CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "-o", "job.gpgl", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(dir / "job.gpgl").substr(0, 5), std::string("\x1b\x05"
+                                                              "FG\x03",
+                                                              5));
+  r = run_foldkit(dir, {"cut", mesh(), "--device", "roland-gx24", "-o", "job.plt", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string plt = slurp(dir / "job.plt");
+  EXPECT_EQ(plt.substr(0, 6), "IN;PA;");
+  EXPECT_EQ(plt.substr(plt.size() - 3), "IN;");
+  r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "-o", "wrong.plt"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("speaks GP-GL"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "wrong.plt"));
+}
+
+TEST(CliCut, RefusesASheetThatDoesNotFitTheCuttingAreaBeforeSendingAnything) {
+  const auto dir = foldkit::test::temp_dir("cli-area");
+  // Fitted to A3 the pieces spread over 277 mm; the Portrait 3's mat is 203 mm wide.
+  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "portrait3", "--mat", "8x12", "--paper", "A3",
+                                     "--fit", "-o", "job.gpgl"});
+  EXPECT_EQ(r.exit_code, 6);
+  EXPECT_NE(r.err.find("leaves the cutting area of Silhouette Portrait 3 with mat 8x12"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "job.gpgl"));
+}
+
+TEST(CliCut, NamesUnknownDevicesAndMedia) {
+  const auto dir = foldkit::test::temp_dir("cli-unknown");
+  CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo9", "--dry-run"});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("no such device profile (known: cameo3, cameo4"), std::string::npos) << r.err;
+  r = run_foldkit(dir, {"cut", mesh(), "--media", "vellum", "--dry-run"});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("--media vellum"), std::string::npos) << r.err;
+}
+
+struct FaultCase {
+  std::vector<std::string> extra;
+  std::string message;
+};
+
+class CliFault : public ::testing::TestWithParam<FaultCase> {};
+
+TEST_P(CliFault, EndsWithAClearMessageAndExit6InBoundedTime) {
+  const auto dir = foldkit::test::temp_dir("cli-fault");
+  std::vector<std::string> args{"cut", mesh(), "--device", "cameo4", "--dry-run", "--ready-timeout",
+                                "0.5", "-q"};
+  args.insert(args.end(), GetParam().extra.begin(), GetParam().extra.end());
+  const auto start = std::chrono::steady_clock::now();
+  const CliRun r = run_foldkit(dir, args);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+  EXPECT_EQ(r.exit_code, 6) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, CliFault,
+    ::testing::Values(FaultCase{{"--sim-fault", "not-ready"}, "paused (not ready) for more than 0.500 s"},
+                      FaultCase{{"--sim-fault", "no-media"}, "no media loaded"},
+                      FaultCase{{"--sim-fault", "disconnect=400"}, "disconnected after 400 bytes"},
+                      FaultCase{{"--sim-fault", "stall=400"}, "accepted no data after 400 bytes"},
+                      FaultCase{{"--sim-fault", "marks-not-found", "--regmarks"},
+                                "registration marks not found"}));
+
+TEST(CliCut, StopsCleanlyOnCtrlC) {
+  const auto dir = foldkit::test::temp_dir("cli-sigint");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // The simulated device stays paused, so the send waits until the signal comes.
+    const std::string err = (dir / "err.txt").string(), bin = foldkit::test::foldkit_binary().string(),
+                      m = mesh();
+    freopen(err.c_str(), "w", stderr);
+    execl(bin.c_str(), bin.c_str(), "cut", m.c_str(), "--device", "cameo4", "--dry-run", "--sim-fault",
+          "not-ready", "--ready-timeout", "60", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait (bounded) until the send is waiting on the device, then press Ctrl-C.
+  bool waiting = false;
+  for (int i = 0; i < 600 && !waiting; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    waiting = slurp(dir / "err.txt").find("waiting:") != std::string::npos;
+  }
+  ASSERT_TRUE(waiting) << slurp(dir / "err.txt");
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping cleanly";
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const std::string err = slurp(dir / "err.txt");
+  EXPECT_NE(err.find("stopped by Ctrl-C after 0 of"), std::string::npos) << err;
+  EXPECT_NE(err.find("the tool was raised and the job ended"), std::string::npos) << err;
+}
+
+}  // namespace
