@@ -1,6 +1,7 @@
 #include "foldkit/devices/usb_ids.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace foldkit::devices {
 
@@ -33,6 +34,42 @@ std::vector<UsbId> builtin_usb_ids() {
 bool is_cutter_vendor(std::uint16_t vendor) {
   // Roland DG publishes no per-model product ids, so its whole vendor id counts.
   return vendor == 0x0b4d || vendor == 0x3844 || vendor == 0x0b75;
+}
+
+namespace {
+std::optional<std::uint16_t> parse_hex16(std::string_view text) {
+  if (text.empty() || text.size() > 4) return std::nullopt;
+  unsigned value = 0;
+  for (char c : text) {
+    if (!std::isxdigit(static_cast<unsigned char>(c))) return std::nullopt;
+    value = value * 16 + static_cast<unsigned>(std::isdigit(static_cast<unsigned char>(c))
+                                                   ? c - '0'
+                                                   : std::tolower(static_cast<unsigned char>(c)) - 'a' + 10);
+  }
+  if (value == 0) return std::nullopt;
+  return static_cast<std::uint16_t>(value);
+}
+}  // namespace
+
+std::optional<UsbId> parse_usb_id(std::string_view text) {
+  const auto eq = text.find('=');
+  const std::string_view ids = text.substr(0, eq);
+  const auto colon = ids.find(':');
+  if (colon == std::string_view::npos) return std::nullopt;
+  const auto vendor = parse_hex16(ids.substr(0, colon));
+  const auto product = parse_hex16(ids.substr(colon + 1));
+  if (!vendor || !product) return std::nullopt;
+  std::string model = eq == std::string_view::npos ? std::string() : std::string(text.substr(eq + 1));
+  if (eq != std::string_view::npos && model.empty()) return std::nullopt;
+  if (model.empty()) model = "user-given " + std::string(ids);
+  return UsbId{*vendor, *product, model};
+}
+
+std::optional<std::string> usb_model_name(std::span<const UsbId> known, std::uint16_t vendor,
+                                          std::uint16_t product) {
+  for (const auto& id : known)
+    if (id.vendor == vendor && id.product == product) return id.model;
+  return std::nullopt;
 }
 
 DeviceState parse_gpgl_status(std::span<const std::byte> reply) {

@@ -3,8 +3,10 @@
 // status reply, and how a byte stream is cut into slices that end on a command boundary.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "foldkit/devices/transport.hpp"
@@ -20,6 +22,14 @@ struct UsbId {
 
 /// The ids of docs/plotter-protocols.md section 1.1 (same set as profiles/udev/60-foldkit-cutters.rules).
 std::vector<UsbId> builtin_usb_ids();
+
+/// Reads "0b4d:112f" or "0b4d:112f=My Cutter" (hex ids, optional model name), as given on a command
+/// line for models newer than the table; nullopt when malformed or an id is 0 or beyond 16 bits.
+std::optional<UsbId> parse_usb_id(std::string_view text);
+
+/// The model name for an id in `known`, or nullopt.
+std::optional<std::string> usb_model_name(std::span<const UsbId> known, std::uint16_t vendor,
+                                          std::uint16_t product);
 
 /// Whether a vendor makes cutters, so an unknown product of printer class is still worth listing.
 bool is_cutter_vendor(std::uint16_t vendor);
