@@ -314,7 +314,9 @@ void setup_cut(CLI::App& app) {
 #ifdef FOLDKIT_CUT_HAS_USB
         devices::UsbSelector sel;
         sel.id = {device.usb_vendor, device.usb_product, device.name};
-        transport = devices::open_usb_cutter(sel);
+        devices::UsbOptions usb;
+        usb.gpgl_status = device.protocol == devices::Protocol::Gpgl;  // HP-GL cutters have no ESC 0x05
+        transport = devices::open_usb_cutter(sel, usb);
 #else
         throw DeviceError(
             "this build sends to USB cutters through their printer node only: use -o /dev/usb/lp0");
