@@ -1,5 +1,6 @@
-// `foldkit devices [--json] [--usb-id VID:PID[=NAME]]...`: the cutter models foldkit knows and the
-// cutters connected over USB. Finding none is an answer, not an error.
+// `foldkit devices [--json] [--usb-id VID:PID[=NAME]]... [--profile FILE]...`: the device profiles and
+// cutter models foldkit knows, and the cutters connected over USB with the --device that drives each.
+// Finding none is an answer, not an error.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -10,9 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "foldkit/devices/profile.hpp"
 #include "foldkit/devices/usb_errors.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
+#include "profile_options.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -20,6 +23,7 @@ namespace {
 struct DevicesArgs {
   bool json = false;
   std::vector<std::string> usb_ids;
+  std::vector<std::string> profile_files;
 };
 
 std::string hex4(std::uint16_t v) {
@@ -40,17 +44,37 @@ const char* access_name(devices::UsbAccess a) {
   return "unknown";
 }
 
+// The profile that drives a vendor/product pair, or nullptr.
+const devices::DeviceProfile* profile_for(const devices::ProfileSet& set, std::uint16_t vendor,
+                                          std::uint16_t product) {
+  for (const auto& d : set.devices)
+    if (d.usb_vendor == vendor && d.usb_product == product) return &d;
+  return nullptr;
+}
+
+// Known ids: the built-in table, then the profiles (their names win), then --usb-id.
+void add_or_rename(std::vector<devices::UsbId>& known, const devices::UsbId& id) {
+  for (auto& k : known) {
+    if (k.vendor == id.vendor && k.product == id.product) {
+      k.model = id.model;
+      return;
+    }
+  }
+  known.push_back(id);
+}
+
 void run_devices(const DevicesArgs& args) {
+  const devices::ProfileSet profiles = load_cli_profiles(args.profile_files);
   std::vector<devices::UsbId> known = devices::builtin_usb_ids();
+  for (const auto& d : profiles.devices)
+    if (d.usb_vendor != 0) add_or_rename(known, {d.usb_vendor, d.usb_product, d.name});
   for (const auto& text : args.usb_ids) {
     auto id = devices::parse_usb_id(text);
     if (!id)
       throw Error("--usb-id " + text + ": expected VID:PID in hex, e.g. 0b4d:1150 or 0b4d:1150=Name",
                   ExitCode::Usage);
     // A user-given id names a model the table lacks, or renames one it has.
-    std::erase_if(
-        known, [&](const devices::UsbId& k) { return k.vendor == id->vendor && k.product == id->product; });
-    known.push_back(*id);
+    add_or_rename(known, *id);
   }
 
   std::vector<devices::FoundDevice> found;
@@ -67,21 +91,40 @@ void run_devices(const DevicesArgs& args) {
     for (const auto& k : known)
       j["known_models"].push_back(
           {{"vendor", hex4(k.vendor)}, {"product", hex4(k.product)}, {"model", k.model}});
+    j["profiles"] = nlohmann::json::array();
+    for (const auto& d : profiles.devices)
+      j["profiles"].push_back(
+          {{"id", d.id},
+           {"name", d.name},
+           {"protocol", devices::protocol_name(d.protocol)},
+           {"vendor", d.usb_vendor ? nlohmann::json(hex4(d.usb_vendor)) : nlohmann::json()},
+           {"product", d.usb_vendor ? nlohmann::json(hex4(d.usb_product)) : nlohmann::json()}});
     j["usb"] = nlohmann::json::array();
-    for (const auto& f : found)
+    for (const auto& f : found) {
+      const auto* profile = profile_for(profiles, f.id.vendor, f.id.product);
       j["usb"].push_back({{"vendor", hex4(f.id.vendor)},
                           {"product", hex4(f.id.product)},
                           {"model", f.id.model},
                           {"known_model", f.known_model},
                           {"bus", f.bus},
                           {"address", f.address},
-                          {"access", access_name(f.access)}});
+                          {"access", access_name(f.access)},
+                          {"profile", profile ? nlohmann::json(profile->id) : nlohmann::json()}});
+    }
     j["usb_error"] = usb_problem ? nlohmann::json(*usb_problem) : nlohmann::json(nullptr);
     std::cout << j.dump(2) << "\n";
     return;
   }
 
-  std::cout << "Known cutter models (" << known.size() << "):\n";
+  std::cout << "Device profiles (--device):\n";
+  for (const auto& d : profiles.devices) {
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-14s %-28s %-5s %s\n", d.id.c_str(), d.name.c_str(),
+                  devices::protocol_name(d.protocol),
+                  d.usb_vendor ? (hex4(d.usb_vendor) + ":" + hex4(d.usb_product)).c_str() : "no USB id");
+    std::cout << line;
+  }
+  std::cout << "\nKnown USB cutter models (" << known.size() << "):\n";
   for (const auto& k : known)
     std::cout << "  " << hex4(k.vendor) << ":" << hex4(k.product) << "  " << k.model << "\n";
   std::cout << "\nCutters on USB:\n";
@@ -94,6 +137,12 @@ void run_devices(const DevicesArgs& args) {
     std::snprintf(where, sizeof where, "bus %03u address %03u", f.bus, f.address);
     std::cout << "  " << hex4(f.id.vendor) << ":" << hex4(f.id.product) << "  " << f.id.model << "  "
               << where;
+    if (const auto* profile = profile_for(profiles, f.id.vendor, f.id.product)) {
+      std::cout << "  --device " << profile->id;
+    } else {
+      std::cout << "  no profile: pick a similar --device and add --usb-vid " << hex4(f.id.vendor)
+                << " --usb-pid " << hex4(f.id.product);
+    }
     if (f.access == devices::UsbAccess::PermissionDenied) {
       std::cout << "  permission denied: install profiles/udev/" << devices::kUdevRulesFile
                 << " (docs/usb.md)";
@@ -106,9 +155,11 @@ void run_devices(const DevicesArgs& args) {
 
 void setup_devices(CLI::App& app) {
   auto args = std::make_shared<DevicesArgs>();
-  auto* cmd = app.add_subcommand("devices",
-                                 "List the cutter models foldkit knows and the cutters connected over USB");
+  auto* cmd = app.add_subcommand(
+      "devices",
+      "List the device profiles and cutter models foldkit knows, and the cutters connected over USB");
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
+  add_profile_options(*cmd, args->profile_files);
   cmd->add_option("--usb-id", args->usb_ids,
                   "Also look for this model: VID:PID in hex, optionally =NAME (repeatable)");
   cmd->callback([args] { run_devices(*args); });

@@ -87,6 +87,12 @@ std::vector<std::byte> bytes_of(const std::string& s) {
   return out;
 }
 
+std::string hex4(std::uint16_t v) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04x", v);
+  return text;
+}
+
 // Set in the child process that runs the session tests inside umockdev-run.
 bool inside_umockdev() {
   return std::getenv("FOLDKIT_UMOCKDEV_CHILD") != nullptr;
@@ -97,7 +103,8 @@ bool inside_umockdev() {
 TEST(CliDevices, ListsTheKnownModelsAndExitsZero) {
   const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("Known cutter models"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Device profiles (--device):"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Known USB cutter models"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("0b4d:112f  Silhouette Cameo 3"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Cutters on USB:"), std::string::npos) << r.out;
 }
@@ -106,7 +113,12 @@ TEST(CliDevices, JsonListsEveryBuiltinModelWithHexIds) {
   const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["known_models"].size(), builtin_usb_ids().size());
+  for (const auto& id : builtin_usb_ids()) {
+    bool listed = false;
+    for (const auto& m : j["known_models"])
+      listed |= m["vendor"] == hex4(id.vendor) && m["product"] == hex4(id.product);
+    EXPECT_TRUE(listed) << id.model;
+  }
   EXPECT_TRUE(j["usb"].is_array());
   bool cameo4 = false;
   for (const auto& m : j["known_models"])
@@ -119,8 +131,31 @@ TEST(CliDevices, AUsbIdFromTheCommandLineJoinsTheKnownModels) {
                          "0b4d:11ff=Cameo 6 (prototype)"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["known_models"].size(), builtin_usb_ids().size() + 1);
-  EXPECT_EQ(j["known_models"].back()["model"], "Cameo 6 (prototype)");
+  bool listed = false;
+  for (const auto& m : j["known_models"])
+    listed |= m["vendor"] == "0b4d" && m["product"] == "11ff" && m["model"] == "Cameo 6 (prototype)";
+  EXPECT_TRUE(listed) << r.out;
+}
+
+TEST(CliDevices, ListsTheDeviceProfilesWithTheirUsbIds) {
+  const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  bool cameo3 = false;
+  for (const auto& p : j["profiles"])
+    cameo3 |=
+        p["id"] == "cameo3" && p["vendor"] == "0b4d" && p["product"] == "112f" && p["protocol"] == "gpgl";
+  EXPECT_TRUE(cameo3) << r.out;
+}
+
+TEST(CliDevices, ABadUserProfileIsAnInputErrorNamingTheFile) {
+  const fs::path dir = foldkit::test::temp_dir("cli_devices_profile");
+  std::ofstream(dir / "mine.toml") << "kind = \"device\"\nid = \"mine\"\nbogus_key = 1\n";
+  const Outcome r =
+      run({foldkit::test::foldkit_binary().string(), "devices", "--profile", (dir / "mine.toml").string()});
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.err.find("mine.toml"), std::string::npos) << r.err;
+  fs::remove_all(dir);
 }
 
 TEST(CliDevices, AMalformedUsbIdIsAUsageError) {
@@ -134,7 +169,9 @@ TEST(CliDevicesUmockdev, TheRecordedCameo3IsListedWithBusAndAddress) {
   const Outcome r =
       run(concat(umockdev_prefix(false), {foldkit::test::foldkit_binary().string(), "devices"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("0b4d:112f  Silhouette Cameo 3  bus 003 address 017"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0b4d:112f  Silhouette Cameo 3  bus 003 address 017  --device cameo3"),
+            std::string::npos)
+      << r.out;
   // The recording's hubs (vendor 214b) and root hub are not cutters.
   EXPECT_EQ(r.out.find("214b"), std::string::npos) << r.out;
 }
@@ -153,6 +190,7 @@ TEST(CliDevicesUmockdev, JsonGivesTheCameo3AsAKnownAccessibleModel) {
   EXPECT_EQ(d["known_model"], true);
   EXPECT_EQ(d["bus"], 3);
   EXPECT_EQ(d["address"], 17);
+  EXPECT_EQ(d["profile"], "cameo3");
   EXPECT_TRUE(j["usb_error"].is_null());
 }
 
