@@ -17,12 +17,7 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/devices/send.hpp"
 #include "foldkit/devices/simulated_device.hpp"
-// usb_transport lands separately (the USB engineer's part); until it is in the tree, cut sends to files,
-// device nodes and the simulated device only. Remove this guard once it has landed.
-#if __has_include("foldkit/devices/usb_transport.hpp")
 #include "foldkit/devices/usb_transport.hpp"
-#define FOLDKIT_CUT_HAS_USB 1
-#endif
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
 #include "pipeline.hpp"
@@ -311,16 +306,11 @@ void setup_cut(CLI::App& app) {
           if (!std::getline(std::cin, ignored))
             throw Error("stopped before sheet " + std::to_string(i + 1), ExitCode::Interrupted);
         }
-#ifdef FOLDKIT_CUT_HAS_USB
         devices::UsbSelector sel;
         sel.id = {device.usb_vendor, device.usb_product, device.name};
         devices::UsbOptions usb;
         usb.gpgl_status = device.protocol == devices::Protocol::Gpgl;  // HP-GL cutters have no ESC 0x05
         transport = devices::open_usb_cutter(sel, usb);
-#else
-        throw DeviceError(
-            "this build sends to USB cutters through their printer node only: use -o /dev/usb/lp0");
-#endif
       }
       rep.target = transport->describe();
       SigintGuard guard;
