@@ -103,6 +103,39 @@ TEST(SimulatedDevice, AnswersTheCameo3HandshakeLikeTheRecording) {
   EXPECT_EQ(reply("TB71\x03"), std::string("    0,    0\x03"));
 }
 
+TEST(SimulatedDevice, FindsTheMarksAndCutsRelativeToThem) {
+  const DeviceProfile& device = profiles().device("cameo4");
+  Sheet marked = test::two_piece_sheet({25, 30});
+  test::add_regmarks(marked, {10, 12}, {150, 90});
+  PlanOptions o;
+  o.regmarks = true;
+  const Job job = plan_job(marked, device, profiles().medium("copy-80"), o);
+  SimulatedDevice dev(device);
+  send_all(dev, encode_gpgl(job));
+  dev.close();
+  ASSERT_TRUE(dev.mark_origin().has_value());
+  EXPECT_EQ(*dev.mark_origin(), (Vec2{240, 200}));  // 12 mm down, 10 mm across, 20 units per mm
+  ASSERT_EQ(dev.strokes().size(), job.stats.strokes);
+  // Back on the page, the first outline starts where the sheet has it.
+  const Vec2 first = device_to_page(device, dev.strokes().back().points.front() + *dev.mark_origin(),
+                                    cutting_area_mm(device, ""));
+  bool on_a_corner = false;
+  for (const Path& p : marked.paths)
+    if (p.role == PathRole::Cut)
+      for (Vec2 q : p.points_mm)
+        on_a_corner |= norm(q - first) < 0.05;
+  EXPECT_TRUE(on_a_corner) << first.x << ", " << first.y;
+}
+
+TEST(SimulatedDevice, FollowsHpglRelativeMoves) {
+  SimulatedDevice dev(profiles().device("test-hpgl"));
+  dev.write(stream_bytes("IN;SP1;VS5;FS5;PU400,400;PR;PD100,0,0,100;PA;PU0,0;SP0;IN;"));
+  dev.close();
+  ASSERT_EQ(dev.strokes().size(), 1u);
+  EXPECT_EQ(dev.strokes()[0].points, (std::vector<Vec2>{{400, 400}, {500, 400}, {500, 500}}));
+  EXPECT_NEAR(dev.down_length_mm(), 5, 1e-9);
+}
+
 TEST(SimulatedDevice, RejectsAnUnknownCommandWithItsByteOffset) {
   SimulatedDevice dev(profiles().device("test"));
   const std::string msg = error_of([&] { dev.write(stream_bytes("\x1b\x04TG1\x03QQ5\x03")); });
