@@ -45,6 +45,18 @@ const char* fold_method_name(FoldMethod m) {
 
 namespace {
 
+// Physical limits of any cutting plotter or paper, with room to spare. They keep hostile or mistyped
+// profiles from reaching the planner: device coordinates stay far inside 32 bits (1000 units/mm over
+// 100 m is 1e8), time estimates stay finite, and a perforation dash cannot be shorter than a blade tip.
+constexpr double kMinUnitsPerMm = 1;       // coarser than 1 mm is no cutter
+constexpr double kMaxUnitsPerMm = 1000;    // 1 um steps; real devices use 20 (GP-GL) or 40 (HP-GL)
+constexpr double kMaxLengthMm = 100'000;   // a 100 m roll
+constexpr double kMaxSpeedMmS = 10'000;    // 10 m/s; real cutters reach about 1 m/s
+constexpr double kMaxForceGf = 100'000;    // 100 kgf; real cutters reach about 600 gf
+constexpr double kMaxThicknessMm = 10;     // thicker than any card a drag knife cuts
+constexpr double kMinPerforationMm = 0.1;  // a dash or gap shorter than this is not a dash
+constexpr double kMaxPerforationMm = 1000;
+
 // Reads one TOML table, remembering which keys were asked for so that leftovers (typos, keys from
 // another version) are reported instead of ignored.
 class Reader {
@@ -72,6 +84,21 @@ class Reader {
   double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
     const double v = number(key, fallback);
     if (!(v > 0)) fail(key, "must be greater than 0, got " + format(v));
+    return v;
+  }
+  /// A positive number no larger than `hi`: physical limits so absurd values fail here, not as
+  /// overflowing device coordinates or hours of planning later (docs/failures.md, "Profiles").
+  double positive_up_to(const std::string& key, double hi, std::optional<double> fallback = std::nullopt) {
+    const double v = positive(key, fallback);
+    if (v > hi) fail(key, "must be at most " + format(hi) + ", got " + format(v));
+    return v;
+  }
+  /// A number in [lo, hi] (lo > 0), for quantities with a lower physical limit too.
+  double between(const std::string& key, double lo, double hi,
+                 std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (!(v >= lo && v <= hi))
+      fail(key, "must be between " + format(lo) + " and " + format(hi) + ", got " + format(v));
     return v;
   }
   double non_negative(const std::string& key, std::optional<double> fallback = std::nullopt) {
@@ -224,9 +251,9 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.name = root.string("name");
   d.protocol = root.choice<Protocol>("protocol", {{"gpgl", Protocol::Gpgl}, {"hpgl", Protocol::Hpgl}});
   d.firmware = root.string("firmware", d.name);
-  d.units_per_mm = root.positive("units_per_mm");
+  d.units_per_mm = root.between("units_per_mm", kMinUnitsPerMm, kMaxUnitsPerMm);
   d.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods, FoldMethod::ReducedForce);
-  d.travel_speed_mm_s = root.positive("travel_speed_mm_s", 200.0);
+  d.travel_speed_mm_s = root.positive_up_to("travel_speed_mm_s", kMaxSpeedMmS, 200.0);
   d.tool_change_s = root.non_negative("tool_change_s", 0.2);
 
   Reader usb = root.table("usb", true);
@@ -241,8 +268,8 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   axes.finish();
 
   Reader area = root.table("area");
-  d.area_width_mm = area.positive("width_mm");
-  d.area_max_length_mm = area.positive("max_length_mm");
+  d.area_width_mm = area.positive_up_to("width_mm", kMaxLengthMm);
+  d.area_max_length_mm = area.positive_up_to("max_length_mm", kMaxLengthMm);
   d.margin_mm = area.non_negative("margin_mm", 0.0);
   area.finish();
 
@@ -250,8 +277,8 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
     Mat mat;
     mat.id = m.string("id");
     mat.code = static_cast<int>(m.integer("code", 0, 99, 0));
-    mat.width_mm = m.positive("width_mm");
-    mat.length_mm = m.positive("length_mm");
+    mat.width_mm = m.positive_up_to("width_mm", kMaxLengthMm);
+    mat.length_mm = m.positive_up_to("length_mm", kMaxLengthMm);
     if (mat.width_mm > d.area_width_mm + 1e-9)
       m.fail("width_mm", "wider than the cutting area (" + std::to_string(d.area_width_mm) + " mm)");
     if (d.mat(mat.id)) m.fail("id", "mat \"" + mat.id + "\" given twice");
@@ -276,11 +303,11 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
 
   Reader speed = root.table("speed");
   d.speed_steps = read_range(speed);
-  d.mm_s_per_speed_step = speed.positive("mm_s_per_step");
+  d.mm_s_per_speed_step = speed.positive_up_to("mm_s_per_step", kMaxSpeedMmS);
   speed.finish();
   Reader force = root.table("force");
   d.force_steps = read_range(force);
-  d.gf_per_force_step = force.positive("gf_per_step");
+  d.gf_per_force_step = force.positive_up_to("gf_per_step", kMaxForceGf);
   force.finish();
 
   Reader reg = root.table("regmarks", true);
@@ -304,8 +331,8 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
 
 ToolSettings read_settings(Reader r) {
   ToolSettings s;
-  s.force_gf = r.positive("force_gf");
-  s.speed_mm_s = r.positive("speed_mm_s");
+  s.force_gf = r.positive_up_to("force_gf", kMaxForceGf);
+  s.speed_mm_s = r.positive_up_to("speed_mm_s", kMaxSpeedMmS);
   s.passes = static_cast<int>(r.integer("passes", 1, 10, 1));
   r.finish();
   return s;
@@ -316,14 +343,14 @@ MediaProfile read_media(Reader& root, const fs::path& file) {
   m.file = file;
   m.id = file.stem().string();
   m.name = root.string("name");
-  m.thickness_mm = root.positive("thickness_mm");
+  m.thickness_mm = root.positive_up_to("thickness_mm", kMaxThicknessMm);
   if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods);
   m.cut = read_settings(root.table("cut"));
   m.score = read_settings(root.table("score"));
   m.draw = read_settings(root.table("draw"));
   Reader perf = root.table("perforation", true);
-  m.perforation_cut_mm = perf.positive("cut_mm", 1.0);
-  m.perforation_gap_mm = perf.positive("gap_mm", 1.0);
+  m.perforation_cut_mm = perf.between("cut_mm", kMinPerforationMm, kMaxPerforationMm, 1.0);
+  m.perforation_gap_mm = perf.between("gap_mm", kMinPerforationMm, kMaxPerforationMm, 1.0);
   perf.finish();
   return m;
 }

@@ -310,9 +310,12 @@ void check_off_header(const std::string& text, const std::string& name, int face
   while (std::getline(in, line)) {
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    // The first non-blank line is the counts line. Trying later lines instead would take vertex
+    // coordinates for counts when the real counts overflow, and OpenMesh then reserves for the huge ones.
     std::istringstream ls(line);
-    if (ls >> nv >> nf) break;
-    nv = nf = -1;
+    if (!(ls >> nv >> nf)) nv = nf = -1;
+    break;
   }
   if (nv < 0 || nf < 0) throw InputError(name, "unparsable OFF header (no vertex and face counts)");
   const bool binary = magic.find("BINARY") != std::string::npos;
