@@ -7,6 +7,7 @@ namespace foldkit::cli {
 void setup_make(CLI::App& app);
 void setup_unfold(CLI::App& app);
 void setup_inspect(CLI::App& app);
+void setup_bench(CLI::App& app);
 void setup_cut(CLI::App& app);
 void setup_profiles(CLI::App& app);
 void setup_devices(CLI::App& app);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   foldkit::cli::setup_make(app);
   foldkit::cli::setup_unfold(app);
   foldkit::cli::setup_inspect(app);
+  foldkit::cli::setup_bench(app);
   foldkit::cli::setup_cut(app);
   foldkit::cli::setup_profiles(app);
   foldkit::cli::setup_devices(app);
