@@ -23,7 +23,7 @@ struct SeamConstraints {
 };
 
 struct UnfoldOptions {
-  Method method = Method::Mst;
+  Method method = Method::Search;  ///< default: the repair search (bench: one piece where mst leaves many)
   std::uint64_t seed = 1;
   double time_limit_s = 60;   ///< wall-clock budget for GA/search
   int threads = 0;            ///< 0: as many as the hardware has
