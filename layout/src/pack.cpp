@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
 namespace foldkit::layout {
 namespace {
@@ -17,6 +19,7 @@ struct Raster {
   int width = 0, height = 0;
   std::vector<std::vector<std::pair<int, int>>> runs;  // per row: inclusive [i0, i1]
   long cells = 0;
+  double centroid_x = 0, centroid_y = 0;  // mean cell position, in cells from the raster origin
 };
 
 std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
@@ -66,8 +69,16 @@ Raster rasterize(std::span<const Polygon> shape, double angle, double grow, doub
         row.push_back({i0, i1});
       }
     }
-    for (auto [i0, i1] : r.runs[j])
-      r.cells += i1 - i0 + 1;
+    for (auto [i0, i1] : r.runs[j]) {
+      const long n = i1 - i0 + 1;
+      r.cells += n;
+      r.centroid_x += 0.5 * (i0 + i1) * n;
+      r.centroid_y += static_cast<double>(j) * n;
+    }
+  }
+  if (r.cells > 0) {
+    r.centroid_x /= r.cells;
+    r.centroid_y /= r.cells;
   }
   return r;
 }
@@ -136,17 +147,23 @@ class SheetGrid {
 struct Spot {
   int x = -1, y = -1;
   const Raster* raster = nullptr;
+  double score_y = -1e300, score_x = 1e300;
 };
 
-// Highest (then leftmost) free position of any of the rasters on the grid.
+// The placement whose centre of area is highest on the sheet (then leftmost), over all rotations:
+// judging by the centre rather than the bottom edge lets a tall piece drop into a tall gap instead
+// of lying flat across the top. For each rotation the highest feasible row is found by scanning down.
 Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
   Spot best;
   for (const Raster& r : rasters) {
     if (r.width > grid.nx() || r.height > grid.ny() || r.cells > grid.free_cells()) continue;
-    for (int y = grid.ny() - r.height; y >= std::max(best.y, 0); --y) {
+    for (int y = grid.ny() - r.height; y >= 0; --y) {
+      const double score_y = y + r.centroid_y;
+      if (score_y < best.score_y - 1e-9) break;
       const int x = grid.first_fit_in_row(r, y, 0);
       if (x < 0) continue;
-      if (y > best.y || (y == best.y && x < best.x)) best = {x, y, &r};
+      const double score_x = x + r.centroid_x;
+      if (score_y > best.score_y + 1e-9 || score_x < best.score_x) best = {x, y, &r, score_y, score_x};
       break;
     }
   }
@@ -201,67 +218,95 @@ double min_area_rect_angle(std::span<const Vec2> points) {
 }
 
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
-  PackResult result;
-  result.placements.resize(items.size());
   const double cell = options.cell_mm;
   const double half_gap = 0.5 * options.spacing_mm;
   // The grid reaches half a gap beyond the area: an item's grown shape may use it, the item may not.
   const Vec2 grid_min = options.area_mm.min - Vec2{half_gap, half_gap};
-  const int nx = static_cast<int>(std::floor((options.area_mm.width() + 2 * half_gap) / cell));
-  const int ny = static_cast<int>(std::floor((options.area_mm.height() + 2 * half_gap) / cell));
+  const int nx = std::max(0, static_cast<int>(std::floor((options.area_mm.width() + 2 * half_gap) / cell)));
+  const int ny = std::max(0, static_cast<int>(std::floor((options.area_mm.height() + 2 * half_gap) / cell)));
   const double grow = half_gap + cell * std::sqrt(0.5);
 
-  auto new_sheet = [&] {
-    SheetGrid grid(std::max(nx, 0), std::max(ny, 0));
-    for (const Box2& box : options.keep_out_mm) {
-      const int x0 = static_cast<int>(std::floor((box.min.x - half_gap - grid_min.x) / cell));
-      const int x1 = static_cast<int>(std::ceil((box.max.x + half_gap - grid_min.x) / cell)) - 1;
-      const int y0 = static_cast<int>(std::floor((box.min.y - half_gap - grid_min.y) / cell));
-      const int y1 = static_cast<int>(std::ceil((box.max.y + half_gap - grid_min.y) / cell)) - 1;
-      for (int y = y0; y <= y1; ++y)
-        grid.take(y, x0, x1);
+  SheetGrid empty(nx, ny);
+  for (const Box2& box : options.keep_out_mm) {
+    const int x0 = static_cast<int>(std::floor((box.min.x - half_gap - grid_min.x) / cell));
+    const int x1 = static_cast<int>(std::ceil((box.max.x + half_gap - grid_min.x) / cell)) - 1;
+    const int y0 = static_cast<int>(std::floor((box.min.y - half_gap - grid_min.y) / cell));
+    const int y1 = static_cast<int>(std::ceil((box.max.y + half_gap - grid_min.y) / cell)) - 1;
+    for (int y = y0; y <= y1; ++y)
+      empty.take(y, x0, x1);
+  }
+
+  std::vector<std::vector<Raster>> rasters(items.size());
+  std::vector<double> area(items.size()), longest(items.size()), girth(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    for (double angle : candidate_angles(items[i], options.rotations))
+      rasters[i].push_back(rasterize(items[i].shape_mm, angle, grow, cell));
+    area[i] = std::fabs(total_area(items[i].shape_mm));
+    Box2 box;
+    for (const Polygon& p : items[i].shape_mm)
+      box.add(bounds_of(p));
+    longest[i] = std::max(box.width(), box.height());
+    girth[i] = box.width() + box.height();
+  }
+
+  // One greedy pass in a given order. Returns the result and how many rows the last sheet uses.
+  auto run = [&](const std::vector<int>& order) {
+    PackResult result;
+    result.placements.resize(items.size());
+    std::vector<SheetGrid> sheets;
+    int last_lowest = ny;
+    for (int index : order) {
+      Spot spot;
+      int sheet = 0;
+      for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
+        spot = find_spot(sheets[sheet], rasters[index]);
+        if (spot.raster) break;
+      }
+      if (!spot.raster && (!options.max_sheets || static_cast<int>(sheets.size()) < *options.max_sheets)) {
+        SheetGrid fresh = empty;
+        spot = find_spot(fresh, rasters[index]);
+        if (spot.raster) {
+          sheets.push_back(std::move(fresh));
+          last_lowest = ny;
+        }
+      }
+      if (!spot.raster) {
+        result.unplaced.push_back(index);
+        continue;
+      }
+      const Raster& r = *spot.raster;
+      for (int j = 0; j < r.height; ++j)
+        for (auto [i0, i1] : r.runs[j])
+          sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
+      if (sheet + 1 == static_cast<int>(sheets.size())) last_lowest = std::min(last_lowest, spot.y);
+      const Vec2 corner = grid_min + Vec2{cell * spot.x, cell * spot.y};
+      result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
     }
-    return grid;
+    std::sort(result.unplaced.begin(), result.unplaced.end());
+    result.sheet_count = static_cast<int>(sheets.size());
+    return std::make_pair(std::move(result), ny - last_lowest);
   };
 
-  std::vector<double> area(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i)
-    area[i] = std::fabs(total_area(items[i].shape_mm));
-  std::vector<int> order(items.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area[a] > area[b]; });
-
-  std::vector<SheetGrid> sheets;
-  for (int index : order) {
-    std::vector<Raster> rasters;
-    for (double angle : candidate_angles(items[index], options.rotations))
-      rasters.push_back(rasterize(items[index].shape_mm, angle, grow, cell));
-
-    Spot spot;
-    int sheet = 0;
-    for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
-      spot = find_spot(sheets[sheet], rasters);
-      if (spot.raster) break;
+  // Greedy packing depends on the order: a few largest-first orders, keeping the one that places
+  // most, on fewest sheets, leaving the last sheet emptiest (so the others are fullest).
+  PackResult best;
+  int best_rows = 0;
+  bool have = false;
+  for (const std::vector<double>* key : {&area, &longest, &girth}) {
+    std::vector<int> order(items.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return (*key)[a] > (*key)[b]; });
+    auto [result, rows] = run(order);
+    const auto rank = [](const PackResult& r, int used) {
+      return std::make_tuple(r.unplaced.size(), r.sheet_count, used);
+    };
+    if (!have || rank(result, rows) < rank(best, best_rows)) {
+      best = std::move(result);
+      best_rows = rows;
+      have = true;
     }
-    if (!spot.raster && (!options.max_sheets || static_cast<int>(sheets.size()) < *options.max_sheets)) {
-      SheetGrid fresh = new_sheet();
-      spot = find_spot(fresh, rasters);
-      if (spot.raster) sheets.push_back(std::move(fresh));
-    }
-    if (!spot.raster) {
-      result.unplaced.push_back(index);
-      continue;
-    }
-    const Raster& r = *spot.raster;
-    for (int j = 0; j < r.height; ++j)
-      for (auto [i0, i1] : r.runs[j])
-        sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
-    const Vec2 corner = grid_min + Vec2{cell * spot.x, cell * spot.y};
-    result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
   }
-  std::sort(result.unplaced.begin(), result.unplaced.end());
-  result.sheet_count = static_cast<int>(sheets.size());
-  return result;
+  return best;
 }
 
 }  // namespace foldkit::layout
