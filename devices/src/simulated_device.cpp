@@ -206,6 +206,8 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
   const std::string& n = c.name;
   auto as_int = [&](double v, const char* what) {
     if (v != std::floor(v)) fail(c.offset, std::string(what) + " must be an integer, got " + fmt(v));
+    // Converting a double beyond int's range is undefined behaviour (found by fuzz_device_gpgl).
+    if (std::fabs(v) > 1e9) fail(c.offset, std::string(what) + " out of range, got " + fmt(v));
     return static_cast<int>(v);
   };
   auto holder_arg = [&](std::size_t i) {

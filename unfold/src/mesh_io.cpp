@@ -337,6 +337,12 @@ void check_ply_header(const std::string& text, const std::string& name, int face
     throw InputError(name, "not a PLY file (no 'ply' magic line)");
   const auto end = text.find("end_header");
   if (end == std::string::npos) throw InputError(name, "truncated PLY header (no end_header)");
+  // OpenMesh reads the header word by word and loops forever (printing "Unsupported entry type") when
+  // end_header runs into the next bytes, so it must be a line of its own (found by fuzz_load_ply).
+  const std::size_t after = end + std::string("end_header").size();
+  const bool own_line = (end > 0 && text[end - 1] == '\n') &&
+                        (text.compare(after, 1, "\n") == 0 || text.compare(after, 2, "\r\n") == 0);
+  if (!own_line) throw InputError(name, "malformed PLY header: end_header is not a line of its own");
   static const std::vector<std::string> kTypes{"char",  "uchar",  "short",   "ushort", "int",   "uint",
                                                "float", "double", "int8",    "uint8",  "int16", "uint16",
                                                "int32", "uint32", "float32", "float64"};

@@ -1,0 +1,46 @@
+#pragma once
+// Shared body of the simulated-device fuzz targets: the input is a byte stream sent to a SimulatedDevice
+// of one protocol. The first byte picks the profile (among the built-in ones of that protocol), whether
+// ESC 04 is required first, and where the stream is split into two writes (parsers must not care).
+// A foldkit::Error is an accepted outcome; a crash, sanitizer report, hang or other exception is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "foldkit/devices/profile.hpp"
+#include "foldkit/devices/simulated_device.hpp"
+#include "foldkit/error.hpp"
+
+namespace foldkit::fuzz {
+
+inline const std::vector<devices::DeviceProfile>& profiles_of(devices::Protocol protocol) {
+  static const std::vector<devices::DeviceProfile> chosen = [protocol] {
+    std::vector<devices::DeviceProfile> out;
+    for (auto& d : devices::load_profiles(devices::builtin_profiles_dir()).devices)
+      if (d.protocol == protocol) out.push_back(d);
+    return out;
+  }();
+  return chosen;
+}
+
+inline int run_simulated_device(devices::Protocol protocol, const std::uint8_t* data, std::size_t size) {
+  const auto& profiles = profiles_of(protocol);
+  if (size == 0 || profiles.empty()) return 0;
+  const std::uint8_t control = data[0];
+  const auto bytes = std::span(reinterpret_cast<const std::byte*>(data) + 1, size - 1);
+  devices::SimOptions options;
+  options.require_initialize = (control & 0x80) != 0;
+  devices::SimulatedDevice device(profiles[(control & 0x7f) % profiles.size()], options);
+  const std::size_t split = bytes.empty() ? 0 : (control * 7u) % bytes.size();
+  try {
+    device.write(bytes.first(split));
+    device.write(bytes.subspan(split));
+    (void)device.status();
+    device.close();
+  } catch (const foldkit::Error&) {
+  }
+  return 0;
+}
+
+}  // namespace foldkit::fuzz
