@@ -54,7 +54,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
   std::vector<char> best_fold = tree.fold_flags();
   std::vector<int> tabu_until(m.num_edges(), 0);
   std::vector<int> side, attach, near;
-  int stall = 0;
+  int stall = 0, kick = 0, kicks_since_restart = 0;
   double next_report = 0.2;
   bool stopped = false;
   auto tabu = [&](int e) { return tabu_until[e] > res.steps; };
@@ -79,7 +79,9 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
     const std::vector<int> path = tree.path(f, g);
     if (path.empty()) continue;
 
-    int best_delta = opt.max_uphill + 1, best_cut = -1, best_attach = -1;
+    // During a kick any move is taken (the least bad of the candidates), to leave a local minimum.
+    int best_delta = kick > 0 ? (1 << 20) : opt.max_uphill + 1, best_cut = -1, best_attach = -1;
+    if (kick > 0) --kick;
     for (int k = 0; k < opt.candidates_per_move; ++k) {
       int e = path[uniform(rng, path.size())];
       if (tabu(e) || cons.fold(e)) continue;
@@ -134,7 +136,18 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
       best = tree.overlap_count();
       best_fold = tree.fold_flags();
       stall = 0;
-    } else if (++stall >= opt.restart_after) {
+    } else if (++stall >= opt.restart_after && opt.kicks_per_restart > 0 &&
+               kicks_since_restart < opt.kicks_per_restart) {
+      // Back to the best tree, then a few forced moves: stays near the best tree (which a fresh
+      // tree would throw away) while changing enough to escape its local minimum.
+      tree = CutTree(ctx, best_fold);
+      std::fill(tabu_until.begin(), tabu_until.end(), 0);
+      kick = opt.kick_moves;
+      stall = 0;
+      ++kicks_since_restart;
+      ++res.restarts;
+    } else if (stall >= opt.restart_after) {
+      kicks_since_restart = 0;
       // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but
       // different enough to leave a region the walk keeps returning to.
       std::vector<double> w = ctx.weight;

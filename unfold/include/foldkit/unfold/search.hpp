@@ -19,6 +19,9 @@ struct SearchOptions {
   int candidates_per_move = 6;
   /// Moves without a new best overlap count before restarting from a freshly perturbed tree.
   int restart_after = 1000;
+  /// Stalls answered by going back to the best tree plus `kick_moves` forced moves, before a fresh tree.
+  int kicks_per_restart = 20;
+  int kick_moves = 3;
   /// Moves an edge stays tabu after being cut or folded.
   int tabu_tenure = 12;
   /// Re-attach edges tried per cut edge (the first next to the cut edge, the others anywhere).
