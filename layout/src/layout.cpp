@@ -105,7 +105,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
 }
 
 // The shape packing keeps apart: each piece with its tabs.
-std::vector<PackItem> pack_items_of(const Draft& d, Vec2 area_size) {
+std::vector<PackItem> pack_items_of(const Draft& d, Vec2 room) {
   std::vector<PackItem> items(d.pieces.size());
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
     std::vector<Polygon> parts;
@@ -121,16 +121,14 @@ std::vector<PackItem> pack_items_of(const Draft& d, Vec2 area_size) {
     std::vector<Vec2> points;
     for (const Polygon& poly : items[p].shape_mm)
       points.insert(points.end(), poly.begin(), poly.end());
-    items[p].extra_angles_rad.push_back(best_fit_angle(points, area_size));
+    items[p].extra_angles_rad.push_back(best_fit_angle(points, room));
   }
   return items;
 }
 
 // The largest --size at which every piece (with room for tabs) fits the printable area.
-double largest_fitting_size(const unfold::Unfolding& u, const LayoutOptions& o, double cell_slack) {
-  const Box2 area = printable_area(o);
-  const double border = (o.tabs ? o.tab_width_mm : 0) + o.spacing_mm + cell_slack;
-  const Vec2 room{area.width() - 2 * border, area.height() - 2 * border};
+double largest_fitting_size(const unfold::Unfolding& u, const LayoutOptions& o) {
+  const Vec2 room = piece_room_mm(o);
   double scale = 1e300;
   for (const ScaledPiece& piece : scaled_pieces(u, 1.0)) {
     std::vector<Vec2> points;
@@ -210,7 +208,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   const Vec2 area_size{area.width(), area.height()};
 
   Draft d = draw_pieces(u, o, scale);
-  std::vector<PackItem> items = pack_items_of(d, area_size);
+  std::vector<PackItem> items = pack_items_of(d, piece_room_mm(o));
   const std::size_t piece_items = items.size();
   std::vector<ListBlock> blocks;
   if (o.hints) {
@@ -236,7 +234,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   if (!packed.unplaced.empty()) {
     attempt.complete = false;
     if (!max_sheets) {
-      const double largest = largest_fitting_size(u, o, 2 * o.pack_cell_mm);
+      const double largest = largest_fitting_size(u, o);
       throw LayoutError("piece " + std::to_string(packed.unplaced.front() + 1) + " does not fit the " +
                         format_mm(area_size.x) + "x" + format_mm(area_size.y) +
                         " mm printable area at --size " + format_mm(r.size_mm) +
@@ -413,6 +411,30 @@ Box2 printable_area(const LayoutOptions& o) {
   return area;
 }
 
+Vec2 piece_room_mm(const LayoutOptions& o) {
+  const Box2 area = printable_area(o);
+  const double border = (o.tabs ? o.tab_width_mm : 0) + o.spacing_mm + 2 * o.pack_cell_mm;
+  Vec2 room{area.width() - 2 * border, area.height() - 2 * border};
+  if (o.regmarks) {
+    // The marks' keep-out zones take corners of the area: the band between them across the longer
+    // side is a rectangle free of them.
+    double top = 0, bottom = 0, left = 0, right = 0;
+    for (const Box2& z : regmark_keep_out(o.paper_mm, o.regmark)) {
+      if (z.min.y <= area.min.y) top = std::max(top, z.max.y - area.min.y);
+      if (z.max.y >= area.max.y) bottom = std::max(bottom, area.max.y - z.min.y);
+      if (z.min.x <= area.min.x) left = std::max(left, z.max.x - area.min.x);
+      if (z.max.x >= area.max.x) right = std::max(right, area.max.x - z.min.x);
+    }
+    const double spacing = o.spacing_mm;
+    if (area.height() >= area.width()) {
+      room.y = area.height() - top - bottom - 2 * spacing - 2 * border;
+    } else {
+      room.x = area.width() - left - right - 2 * spacing - 2 * border;
+    }
+  }
+  return {std::max(room.x, 0.0), std::max(room.y, 0.0)};
+}
+
 LayoutResult layout_sheets(const unfold::Unfolding& u, const LayoutOptions& o) {
   validate(o);
   if (u.num_faces() == 0 || u.piece_count == 0)
@@ -425,7 +447,7 @@ LayoutResult layout_sheets(const unfold::Unfolding& u, const LayoutOptions& o) {
   // The scale that lets the largest piece fit and the one that fills the sheet's area bound it above;
   // a bisection on packing runs finds it to within 1%.
   const Box2 area = printable_area(o);
-  const double by_piece = largest_fitting_size(u, o, 2 * o.pack_cell_mm) / u.model_extent;
+  const double by_piece = largest_fitting_size(u, o) / u.model_extent;
   const double by_area = std::sqrt(area.width() * area.height() / std::max(total_model_area(u), 1e-300));
   double hi = std::min(by_piece, by_area);
   Attempt best = build(u, o, hi, 1);

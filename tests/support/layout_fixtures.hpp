@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foldkit/unfold/mesh_io.hpp"
@@ -18,15 +19,21 @@ struct UnfoldedExample {
   unfold::Unfolding unfolding;
 };
 
-/// examples/<name> loaded and unfolded with the default (MST) method, cached.
-inline const UnfoldedExample& unfolded_example(const std::string& name) {
-  static std::map<std::string, UnfoldedExample> cache;
-  auto it = cache.find(name);
+/// examples/<name> loaded and unfolded with `method` (by default the MST baseline: many pieces of
+/// all sizes, the harder case for packing), cached.
+inline const UnfoldedExample& unfolded_example(const std::string& name,
+                                               unfold::Method method = unfold::Method::Mst) {
+  static std::map<std::pair<std::string, int>, UnfoldedExample> cache;
+  const auto key = std::make_pair(name, static_cast<int>(method));
+  auto it = cache.find(key);
   if (it == cache.end()) {
     UnfoldedExample ex;
     ex.mesh = unfold::load_mesh(example_mesh(name)).mesh;
-    ex.unfolding = unfold::unfold_mesh(ex.mesh, unfold::UnfoldOptions{}).unfolding;
-    it = cache.emplace(name, std::move(ex)).first;
+    unfold::UnfoldOptions options;
+    options.method = method;
+    options.threads = 1;
+    ex.unfolding = unfold::unfold_mesh(ex.mesh, options).unfolding;
+    it = cache.emplace(key, std::move(ex)).first;
   }
   return it->second;
 }

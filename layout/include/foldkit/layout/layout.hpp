@@ -92,6 +92,10 @@ struct LayoutResult {
 /// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).
 Box2 printable_area(const LayoutOptions& options);
 
+/// The rectangle (mm) a piece without its tabs must fit at its best rotation to be sure of a place on
+/// a sheet: the printable area less room for tabs, spacing and the packing raster on every side.
+Vec2 piece_room_mm(const LayoutOptions& options);
+
 /// Scales, places and draws every piece. Throws LayoutError when the options are unusable or a piece
 /// cannot fit a sheet at the asked size (the message names the largest --size that fits).
 LayoutResult layout_sheets(const unfold::Unfolding& unfolding, const LayoutOptions& options);
