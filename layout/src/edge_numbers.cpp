@@ -128,8 +128,9 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
       const auto& tab = tabs.tab_of_seam.size() > s ? tabs.tab_of_seam[s] : std::nullopt;
       if (tab && tab->side == k) {
         // On the tab: read from the outside, foot on the edge.
+        // The tab may cover only part of the edge: centre on its base.
         const Vec2 dir = normalized(e.a - e.b);
-        const Vec2 mid = 0.5 * (e.a + e.b);
+        const Vec2 mid = 0.5 * (tab->quad_mm[0] + tab->quad_mm[3]);
         const double tallest = tab->width_mm - o.gap_mm - o.clearance_mm;
         for (double h : heights) {
           if (h > tallest || placed) continue;

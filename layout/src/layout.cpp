@@ -286,8 +286,13 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
       for (std::size_t i = 0; i < loop.size(); ++i) {
         cut.points_mm.push_back(to_sheet(loop[i].a, t, paper_h));
         if (const Tab* tab = tab_at[p][l][i]) {
+          // A tab may cover only part of its edge: then the cut runs along the edge to the tab first.
+          if (norm(tab->quad_mm[0] - loop[i].a) > 1e-9)
+            cut.points_mm.push_back(to_sheet(tab->quad_mm[0], t, paper_h));
           cut.points_mm.push_back(to_sheet(tab->quad_mm[1], t, paper_h));
           cut.points_mm.push_back(to_sheet(tab->quad_mm[2], t, paper_h));
+          if (norm(tab->quad_mm[3] - loop[i].b) > 1e-9)
+            cut.points_mm.push_back(to_sheet(tab->quad_mm[3], t, paper_h));
         }
       }
       sheet.paths.push_back(std::move(cut));

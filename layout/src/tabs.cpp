@@ -88,16 +88,31 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     // Half the free angle at each corner: the neighbour edge's tab may take the other half.
     const double free_a = clockwise_angle(e.b - e.a, prev.a - e.a);
     const double free_b = clockwise_angle(next.b - e.b, e.a - e.b);
-    double w = std::min(options.width_mm, std::max(options.width_per_length * length, options.min_width_mm));
-    for (; w >= options.min_width_mm - 1e-9; w *= 0.8) {
-      // Gentle slants first; steeper ones (still within half the free angle) when the edge is short.
-      for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
-        const double slant_a = std::min(cap, 0.5 * free_a), slant_b = std::min(cap, 0.5 * free_b);
-        Polygon quad = tab_trapezoid(e.a, e.b, w, slant_a, slant_b);
-        const double actual = std::fabs(cross(normalized(e.b - e.a), quad[1] - e.a));
-        if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
-        if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
+    // A tab along p->q (a stretch of the edge) whose corners have free angles free_p, free_q.
+    auto attempt = [&](Vec2 p, Vec2 q, double free_p, double free_q) -> std::optional<Tab> {
+      const double stretch = norm(q - p);
+      double w =
+          std::min(options.width_mm, std::max(options.width_per_length * stretch, options.min_width_mm));
+      for (; w >= options.min_width_mm - 1e-9; w *= 0.8) {
+        // Gentle slants first; steeper ones (still within half the free angle) when the edge is short.
+        for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
+          const double slant_p = std::min(cap, 0.5 * free_p), slant_q = std::min(cap, 0.5 * free_q);
+          Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
+          const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
+          if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
+          if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
+        }
       }
+      return std::nullopt;
+    };
+    if (auto tab = attempt(e.a, e.b, free_a, free_b)) return tab;
+    // In a narrow notch the corner at the notch's tip leaves no room; the wide part of the edge, towards
+    // the notch's mouth, often does: a tab along that part only (its inner end is mid-edge, free 180°).
+    for (double part : {0.6, 0.4}) {
+      if (part * length < 2 * options.min_width_mm) break;
+      const Vec2 cut = free_a < free_b ? e.b + (e.a - e.b) * part : e.a + (e.b - e.a) * part;
+      auto tab = free_a < free_b ? attempt(cut, e.b, kPi, free_b) : attempt(e.a, cut, free_a, kPi);
+      if (tab) return tab;
     }
     return std::nullopt;
   };
