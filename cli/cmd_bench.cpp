@@ -263,8 +263,14 @@ void run_bench(const BenchArgs& a) {
     for (const auto& br : blender_rows) {
       auto it = br.find("mesh");
       if (it == br.end() || it->second != rel) continue;
-      row["blender"] = {{"pieces", std::stoi(br.at("pieces"))}, {"seconds", std::stod(br.at("seconds"))}};
-      std::snprintf(b, sizeof b, "%11s %5s", br.at("pieces").c_str(), br.at("seconds").c_str());
+      if (br.at("pieces").empty()) {
+        // The add-on refused the mesh; say so rather than leave a blank.
+        row["blender"] = {{"error", br.count("error") ? br.at("error") : "refused"}};
+        std::snprintf(b, sizeof b, "%17s", "refused");
+      } else {
+        row["blender"] = {{"pieces", std::stoi(br.at("pieces"))}, {"seconds", std::stod(br.at("seconds"))}};
+        std::snprintf(b, sizeof b, "%11s %5s", br.at("pieces").c_str(), br.at("seconds").c_str());
+      }
       blender = b;
     }
     line << " | " << (blender.empty() ? std::string(17, ' ') : blender);
