@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +13,10 @@ int main(int argc, char** argv) {
   CLI::App app{"foldkit: turn a 3D triangle mesh into a papercraft sheet to print, cut, fold and glue"};
   app.set_version_flag("--version", FOLDKIT_VERSION);
   app.require_subcommand(1);
+  // One line per error, like every other foldkit message (CLI11 would add a "Run with --help" line).
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("foldkit: ") + e.what() + " (see --help)\n";
+  });
   foldkit::cli::setup_make(app);
   foldkit::cli::setup_unfold(app);
   foldkit::cli::setup_inspect(app);
