@@ -60,6 +60,26 @@ TEST(Search, TheSameSeedGivesTheSameCuts) {
   EXPECT_EQ(a.steps, b.steps);
 }
 
+TEST(Search, ThePortfolioGivesTheSameCutsOnOneOrTwoThreads) {
+  const Mesh mesh = load("bob_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  SearchOptions opt;
+  opt.seed = 7;
+  opt.portfolio = 3;
+  opt.round_steps = 64;  // many rounds, so that a timing-dependent winner would show
+  opt.threads = 1;
+  const SearchResult one = search_unfold(ctx, mst_folds(ctx), opt);
+  opt.threads = 2;
+  const SearchResult two = search_unfold(ctx, mst_folds(ctx), opt);
+  opt.threads = 3;
+  const SearchResult three = search_unfold(ctx, mst_folds(ctx), opt);
+  ASSERT_TRUE(one.solved);
+  EXPECT_EQ(one.cut, two.cut);
+  EXPECT_EQ(one.steps, two.steps);
+  EXPECT_EQ(one.cut, three.cut);
+  EXPECT_EQ(one.steps, three.steps);
+}
+
 TEST(Search, OutOfTimeTheBestTreeIsCutApartIntoAValidUnfolding) {
   const Mesh mesh = load("fish_350.obj");
   const UnfoldContext ctx = make_context(mesh);

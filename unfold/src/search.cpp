@@ -6,9 +6,12 @@
 #include "foldkit/unfold/search.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <memory>
 #include <numeric>
 #include <random>
+#include <thread>
 
 #include "foldkit/unfold/mst.hpp"
 
@@ -38,87 +41,92 @@ int uniform(std::mt19937_64& rng, std::size_t n) {
 
 }  // namespace
 
-SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_fold, const SearchOptions& opt,
-                           const ProgressFn& progress) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  const Mesh& m = *ctx.mesh;
-  const auto& cons = opt.constraints;
-  std::mt19937_64 rng(opt.seed);
+namespace {
 
-  CutTree tree(ctx, std::move(initial_fold));
-  join_all_pieces(tree, cons);
-  SearchResult res;
-  int best = tree.overlap_count();
-  std::vector<char> best_fold = tree.fold_flags();
-  std::vector<int> tabu_until(m.num_edges(), 0);
-  std::vector<int> side, attach, near;
-  int stall = 0, kick = 0, kicks_since_restart = 0;
-  double next_report = 0.2;
-  bool stopped = false;
-  auto tabu = [&](int e) { return tabu_until[e] > res.steps; };
+// One independent walk of the repair search. `run` advances it by a fixed number of steps, so that a
+// portfolio of walks advanced in rounds reaches the same states whatever the thread timing.
+class Walker {
+ public:
+  Walker(const UnfoldContext& ctx, const std::vector<char>& initial_fold, const SearchOptions& opt,
+         std::uint64_t seed)
+      : ctx_(ctx), m_(*ctx.mesh), opt_(opt), cons_(opt.constraints), rng_(seed), tree_(ctx, initial_fold) {
+    join_all_pieces(tree_, cons_);
+    best_ = tree_.overlap_count();
+    best_fold_ = tree_.fold_flags();
+    tabu_until_.assign(m_.num_edges(), 0);
+  }
 
-  while (tree.overlap_count() > 0) {
-    if ((res.steps & 15) == 0) {
-      double t = elapsed();
-      if (t >= opt.time_limit_s) break;
-      if (progress && t >= next_report) {
-        next_report = t + 0.2;
-        if (!progress({opt.stage, res.steps, tree.piece_count(), static_cast<double>(best), t})) {
-          stopped = true;
-          break;
-        }
-      }
+  bool solved() const { return tree_.overlap_count() == 0; }
+  int best() const { return best_; }
+  int steps() const { return steps_; }
+  int moves() const { return moves_; }
+  int restarts() const { return restarts_; }
+  const CutTree& tree() const { return tree_; }
+  const std::vector<char>& best_fold() const { return best_fold_; }
+
+  /// Runs up to `budget` steps; stops early when solved or when `out_of_time()` says so (asked every
+  /// 16 steps). Returns false when stopped by `out_of_time`.
+  template <class OutOfTime>
+  bool run(int budget, const OutOfTime& out_of_time) {
+    for (int i = 0; i < budget && !solved(); ++i) {
+      if ((i & 15) == 0 && out_of_time()) return false;
+      step();
     }
-    ++res.steps;
-    const auto& hot = tree.overlapping_faces();
-    int f = hot[uniform(rng, hot.size())];
-    const auto& partners = tree.overlap_partners(f);
-    int g = partners[uniform(rng, partners.size())];
-    const std::vector<int> path = tree.path(f, g);
-    if (path.empty()) continue;
+    return true;
+  }
+
+ private:
+  bool tabu(int e) const { return tabu_until_[e] > steps_; }
+
+  void step() {
+    ++steps_;
+    const auto& hot = tree_.overlapping_faces();
+    int f = hot[uniform(rng_, hot.size())];
+    const auto& partners = tree_.overlap_partners(f);
+    int g = partners[uniform(rng_, partners.size())];
+    const std::vector<int> path = tree_.path(f, g);
+    if (path.empty()) return;
 
     // During a kick any move is taken (the least bad of the candidates), to leave a local minimum.
-    int best_delta = kick > 0 ? (1 << 20) : opt.max_uphill + 1, best_cut = -1, best_attach = -1;
-    if (kick > 0) --kick;
-    for (int k = 0; k < opt.candidates_per_move; ++k) {
-      int e = path[uniform(rng, path.size())];
-      if (tabu(e) || cons.fold(e)) continue;
-      tree.smaller_side(e, side);
-      const int old = tree.cross_overlaps(side);
-      const auto& ev = m.edges[e].v;
-      attach.clear();
-      for (int x : side) {
-        for (int a : m.face_edges[x]) {
-          const auto& edge = m.edges[a];
-          if (a == e || tree.folded(a) || edge.boundary() || cons.cut(a) || tabu(a)) continue;
-          if (tree.in_side(tree.across(a, x))) continue;
+    int best_delta = kick_ > 0 ? (1 << 20) : opt_.max_uphill + 1, best_cut = -1, best_attach = -1;
+    if (kick_ > 0) --kick_;
+    for (int k = 0; k < opt_.candidates_per_move; ++k) {
+      int e = path[uniform(rng_, path.size())];
+      if (tabu(e) || cons_.fold(e)) continue;
+      tree_.smaller_side(e, side_);
+      const int old = tree_.cross_overlaps(side_);
+      const auto& ev = m_.edges[e].v;
+      attach_.clear();
+      for (int x : side_) {
+        for (int a : m_.face_edges[x]) {
+          const auto& edge = m_.edges[a];
+          if (a == e || tree_.folded(a) || edge.boundary() || cons_.cut(a) || tabu(a)) continue;
+          if (tree_.in_side(tree_.across(a, x))) continue;
           // Curvature rule as a pre-filter: after cutting e and folding a, both ends of a must keep
           // the cut edges their class needs, or the move creates a local overlap for certain.
           bool ok = true;
           for (int v : edge.v) {
-            int after = tree.cut_count(v) - 1 + ((v == ev[0] || v == ev[1]) ? 1 : 0);
-            if (after < ctx.required_cuts[v]) ok = false;
+            int after = tree_.cut_count(v) - 1 + ((v == ev[0] || v == ev[1]) ? 1 : 0);
+            if (after < ctx_.required_cuts[v]) ok = false;
           }
-          if (ok) attach.push_back(a);
+          if (ok) attach_.push_back(a);
         }
       }
-      if (attach.empty()) continue;
+      if (attach_.empty()) continue;
       // Edges sharing a vertex with e turn the side about that vertex: a small motion, so few new
       // overlaps. These are tried first; a random edge anywhere on the side gives the long jumps.
-      near.clear();
-      for (int a : attach) {
-        const auto& av = m.edges[a].v;
-        if (av[0] == ev[0] || av[0] == ev[1] || av[1] == ev[0] || av[1] == ev[1]) near.push_back(a);
+      near_.clear();
+      for (int a : attach_) {
+        const auto& av = m_.edges[a].v;
+        if (av[0] == ev[0] || av[0] == ev[1] || av[1] == ev[0] || av[1] == ev[1]) near_.push_back(a);
       }
-      const int tries = std::min<int>(opt.attach_tries, static_cast<int>(attach.size()));
+      const int tries = std::min<int>(opt_.attach_tries, static_cast<int>(attach_.size()));
       for (int t = 0; t < tries; ++t) {
-        int a = (t == 0 && opt.near_first && !near.empty()) ? near[uniform(rng, near.size())]
-                                                            : attach[uniform(rng, attach.size())];
+        int a = (t == 0 && opt_.near_first && !near_.empty()) ? near_[uniform(rng_, near_.size())]
+                                                              : attach_[uniform(rng_, attach_.size())];
         const int limit = old + best_delta - 1;
         if (limit < 0) break;
-        int cost = tree.reattach_cost(side, a, limit);
+        int cost = tree_.reattach_cost(side_, a, limit);
         if (cost <= limit) {
           best_delta = cost - old;
           best_cut = e;
@@ -127,55 +135,149 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
       }
     }
     if (best_cut >= 0) {
-      tree.smaller_side(best_cut, side);
-      tree.reattach(side, best_cut, best_attach);
-      tabu_until[best_cut] = tabu_until[best_attach] = res.steps + opt.tabu_tenure;
-      ++res.moves;
+      tree_.smaller_side(best_cut, side_);
+      tree_.reattach(side_, best_cut, best_attach);
+      tabu_until_[best_cut] = tabu_until_[best_attach] = steps_ + opt_.tabu_tenure;
+      ++moves_;
     }
-    if (tree.overlap_count() < best) {
-      best = tree.overlap_count();
-      best_fold = tree.fold_flags();
-      stall = 0;
-    } else if (++stall >= opt.restart_after && opt.kicks_per_restart > 0 &&
-               kicks_since_restart < opt.kicks_per_restart) {
+    if (tree_.overlap_count() < best_) {
+      best_ = tree_.overlap_count();
+      best_fold_ = tree_.fold_flags();
+      stall_ = 0;
+    } else if (++stall_ >= opt_.restart_after && opt_.kicks_per_restart > 0 &&
+               kicks_since_restart_ < opt_.kicks_per_restart) {
       // Back to the best tree, then a few forced moves: stays near the best tree (which a fresh
       // tree would throw away) while changing enough to escape its local minimum.
-      tree = CutTree(ctx, best_fold);
-      std::fill(tabu_until.begin(), tabu_until.end(), 0);
-      kick = opt.kick_moves;
-      stall = 0;
-      ++kicks_since_restart;
-      ++res.restarts;
-    } else if (stall >= opt.restart_after) {
-      kicks_since_restart = 0;
+      tree_ = CutTree(ctx_, best_fold_);
+      std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
+      kick_ = opt_.kick_moves;
+      stall_ = 0;
+      ++kicks_since_restart_;
+      ++restarts_;
+    } else if (stall_ >= opt_.restart_after) {
+      kicks_since_restart_ = 0;
       // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but
       // different enough to leave a region the walk keeps returning to.
-      std::vector<double> w = ctx.weight;
+      std::vector<double> w = ctx_.weight;
       std::uniform_real_distribution<double> noise(0.0, 0.3);
       for (double& x : w)
-        x += noise(rng);
-      tree = CutTree(ctx, folds_from_cuts(spanning_forest_cuts(m, w, cons)));
-      std::fill(tabu_until.begin(), tabu_until.end(), 0);
-      stall = 0;
-      ++res.restarts;
-      if (tree.overlap_count() < best) {
-        best = tree.overlap_count();
-        best_fold = tree.fold_flags();
+        x += noise(rng_);
+      tree_ = CutTree(ctx_, folds_from_cuts(spanning_forest_cuts(m_, w, cons_)));
+      std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
+      stall_ = 0;
+      ++restarts_;
+      if (tree_.overlap_count() < best_) {
+        best_ = tree_.overlap_count();
+        best_fold_ = tree_.fold_flags();
       }
     }
   }
-  (void)stopped;
-  if (tree.overlap_count() == 0) {
+
+  const UnfoldContext& ctx_;
+  const Mesh& m_;
+  const SearchOptions& opt_;
+  const EdgeConstraints& cons_;
+  std::mt19937_64 rng_;
+  CutTree tree_;
+  int best_ = 0;
+  std::vector<char> best_fold_;
+  std::vector<int> tabu_until_;
+  std::vector<int> side_, attach_, near_;
+  int steps_ = 0, moves_ = 0, restarts_ = 0;
+  int stall_ = 0, kick_ = 0, kicks_since_restart_ = 0;
+};
+
+}  // namespace
+
+SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_fold, const SearchOptions& opt,
+                           const ProgressFn& progress) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const Mesh& m = *ctx.mesh;
+  const int walkers_n = std::max(1, opt.portfolio);
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = std::min(walkers_n, opt.threads > 0 ? opt.threads : hw);
+
+  // Walker k uses seed + k. Built in parallel: the initial overlap test is a full pass over the mesh.
+  std::vector<std::unique_ptr<Walker>> walkers(walkers_n);
+  std::atomic<bool> stop{false};
+  std::atomic<bool> timed_out{false};
+  auto out_of_time = [&] {
+    if (stop.load(std::memory_order_relaxed)) return true;
+    if (elapsed() >= opt.time_limit_s) {
+      timed_out.store(true, std::memory_order_relaxed);
+      return true;
+    }
+    return false;
+  };
+  // Runs job(k) for every walker k on `threads` threads (the calling one included).
+  auto for_each_walker = [&](const auto& job) {
+    std::atomic<int> next{0};
+    auto worker = [&] {
+      for (int k; (k = next.fetch_add(1)) < walkers_n;)
+        job(k);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+      pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool)
+      t.join();
+  };
+  for_each_walker(
+      [&](int k) { walkers[k] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed + k); });
+
+  // Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
+  // wins, so the result depends on the seed only (unless the time limit or a cancel stops it).
+  int winner = -1;
+  double next_report = 0.2;
+  int round_steps = std::max(16, opt.round_steps / 8);
+  for (int round = 0;; ++round) {
+    for (int k = 0; k < walkers_n && winner < 0; ++k)
+      if (walkers[k]->solved()) winner = k;
+    if (winner >= 0 || timed_out.load() || stop.load()) break;
+    if (elapsed() >= opt.time_limit_s) break;
+    if (progress) {
+      double t = elapsed();
+      if (t >= next_report) {
+        next_report = t + 0.2;
+        int best = walkers[0]->best(), steps = 0;
+        for (const auto& w : walkers) {
+          best = std::min(best, w->best());
+          steps += w->steps();
+        }
+        if (!progress({opt.stage, steps, walkers[0]->tree().piece_count(), static_cast<double>(best), t}))
+          break;
+      }
+    }
+    const int budget = round_steps;
+    round_steps = std::min(opt.round_steps, round_steps * 2);
+    for_each_walker([&](int k) { walkers[k]->run(budget, out_of_time); });
+  }
+
+  SearchResult res;
+  for (const auto& w : walkers) {
+    res.steps += w->steps();
+    res.moves += w->moves();
+    res.restarts += w->restarts();
+  }
+  if (winner >= 0) {
+    const CutTree& tree = walkers[winner]->tree();
     res.cut = tree.cut_flags();
     res.solved = true;
     res.best_fold = tree.fold_flags();
     return res;
   }
-  // Out of time: the best tree, cut apart where it still overlaps, so the result is always valid.
-  res.overlaps_left = best;
-  res.cut = folds_from_cuts(best_fold);
-  res.best_fold = std::move(best_fold);
-  cut_until_no_overlap(m, res.cut, ctx.weight, cons);
+  // Out of time: the best tree (fewest overlapping pairs, lowest walker on ties), cut apart where it
+  // still overlaps, so the result is always valid.
+  int pick = 0;
+  for (int k = 1; k < walkers_n; ++k)
+    if (walkers[k]->best() < walkers[pick]->best()) pick = k;
+  res.overlaps_left = walkers[pick]->best();
+  res.best_fold = walkers[pick]->best_fold();
+  res.cut = folds_from_cuts(res.best_fold);
+  cut_until_no_overlap(m, res.cut, ctx.weight, opt.constraints);
   return res;
 }
 

@@ -30,6 +30,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       const UnfoldContext ctx = make_context(mesh);
       SearchOptions so;
       so.seed = options.seed;
+      so.threads = options.threads;
       so.time_limit_s = options.time_limit_s;
       so.constraints = constraints;
       const SearchResult r = search_unfold(

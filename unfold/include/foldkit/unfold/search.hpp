@@ -30,6 +30,14 @@ struct SearchOptions {
   bool near_first = true;
   /// How many overlapping pairs the best move of a step may add (0: never go uphill).
   int max_uphill = 0;
+  /// Independent walks (walk k uses seed + k), advanced in rounds of `round_steps` steps each; after a
+  /// round the lowest-numbered walk that reached one piece wins. Their number, not `threads`, decides
+  /// the result, so the same seed gives the same cuts whatever the thread count.
+  int portfolio = 2;
+  /// Steps per walk per round (the first rounds are shorter, so that small meshes finish at once).
+  int round_steps = 2048;
+  /// Threads the walks are spread over (0: hardware concurrency; never more than `portfolio`).
+  int threads = 0;
   EdgeConstraints constraints;
   /// Stage name reported to the progress callback.
   std::string stage = "search";
@@ -41,16 +49,17 @@ struct SearchResult {
   std::vector<char> cut;
   bool solved = false;    ///< one piece per connected component, without overlaps
   int overlaps_left = 0;  ///< overlapping pairs of the best tree when not solved
-  int moves = 0;          ///< accepted moves
-  int steps = 0;          ///< steps (each evaluates up to candidates_per_move moves)
+  int moves = 0;          ///< accepted moves, summed over the walks
+  int steps = 0;          ///< steps (each evaluates up to candidates_per_move moves), summed over the walks
   int restarts = 0;
   /// Fold flags of the best spanning tree seen (fewest overlapping pairs).
   std::vector<char> best_fold;
 };
 
 /// Runs the search from the fold forest `initial_fold` (pieces of one component are first stitched
-/// into one tree along their lightest edges). Deterministic for a given seed unless stopped by the
-/// time limit or by `progress` returning false.
+/// into one tree along their lightest edges), as a portfolio of walks on up to `threads` threads.
+/// Deterministic for a given seed, whatever the thread count, unless stopped by the time limit or by
+/// `progress` returning false (called between rounds, from the calling thread).
 SearchResult search_unfold(const UnfoldContext& context, std::vector<char> initial_fold,
                            const SearchOptions& options, const ProgressFn& progress = {});
 
