@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -260,8 +261,10 @@ void check_declared_counts(std::uint64_t vertices, std::uint64_t faces, std::uin
 
 // OpenMesh's ASCII OFF and PLY readers parse with iostreams: "nan" or a typo derails them into
 // misleading errors downstream. The vertex block is checked here so the message names the vertex.
-void check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uint64_t vertices,
-                              const std::string& name) {
+// Returns the position after the block. exact_numbers > 0: every vertex line has exactly that many
+// numbers (PLY, whose reader takes tokens, not lines, so one extra number shifts everything after it).
+std::size_t check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uint64_t vertices,
+                                     const std::string& name, int exact_numbers = 0) {
   const char* p = text.c_str() + std::min(pos, text.size());
   const char* const end = text.c_str() + text.size();
   std::uint64_t v = 0;
@@ -291,11 +294,55 @@ void check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uin
     if (numbers == 0) continue;  // blank or comment line
     if (numbers < 3)
       throw InputError(name, "vertex " + std::to_string(v + 1) + " has fewer than 3 coordinates");
+    if (exact_numbers > 0 && numbers != exact_numbers)
+      throw InputError(name, "vertex " + std::to_string(v + 1) + " has " + std::to_string(numbers) +
+                                 " values, the header declares " + std::to_string(exact_numbers));
     ++v;
   }
   if (v < vertices)
     throw InputError(
         name, "truncated file: " + std::to_string(v) + " of " + std::to_string(vertices) + " vertices");
+  return static_cast<std::size_t>(std::min(p, end) - text.c_str());
+}
+
+// ASCII PLY faces: a count of at least 3 then that many indices below `vertices`, one face per line.
+// OpenMesh's reader loops forever on some malformed face blocks (found by fuzz_load_ply).
+void check_ascii_ply_faces(const std::string& text, std::size_t pos, std::uint64_t faces,
+                           std::uint64_t vertices, const std::string& name) {
+  std::istringstream in(text.substr(pos));
+  std::string line;
+  std::uint64_t f = 0;
+  while (f < faces && std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string tok;
+    std::vector<std::string> w;
+    while (ls >> tok)
+      w.push_back(tok);
+    if (w.empty()) continue;
+    const auto integer = [&](const std::string& t, std::uint64_t& out) {
+      char* stop = nullptr;
+      errno = 0;
+      out = std::strtoull(t.c_str(), &stop, 10);
+      return !t.empty() && t[0] != '-' && errno == 0 && stop == t.c_str() + t.size();
+    };
+    std::uint64_t k = 0;
+    if (!integer(w[0], k) || k < 3 || w.size() < k + 1)
+      throw InputError(
+          name, "face " + std::to_string(f + 1) + ": unparsable vertex list '" + line.substr(0, 32) + "'");
+    for (std::uint64_t i = 1; i <= k; ++i) {
+      std::uint64_t index = 0;
+      // Vertices are numbered from 1 in messages, as for every other format.
+      const bool parsed = integer(w[i], index);
+      if (!parsed || index >= vertices)
+        throw InputError(name, "face " + std::to_string(f + 1) + " references vertex " +
+                                   (parsed ? std::to_string(index + 1) : w[i].substr(0, 24)) + " (only " +
+                                   std::to_string(vertices) + " vertices)");
+    }
+    ++f;
+  }
+  if (f < faces)
+    throw InputError(name,
+                     "truncated file: " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
 }
 
 void check_off_header(const std::string& text, const std::string& name, int face_limit) {
@@ -353,7 +400,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   std::string line, format, element;
   std::uint64_t nv = 0, nf = 0;
   bool has_vertex = false, has_face = false, face_list = false;
-  int xyz = 0, line_no = 0;
+  int xyz = 0, line_no = 0, vertex_properties = 0;
   std::getline(in, line);  // "ply"
   ++line_no;
   while (std::getline(in, line)) {
@@ -395,6 +442,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
         face_list = true;
       } else if (w.size() == 3 && is_type(w[1])) {
         if (element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++xyz;
+        if (element == "vertex") ++vertex_properties;
       } else {
         throw InputError(name, "unparsable PLY property line" + where);
       }
@@ -410,7 +458,9 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
   if (ascii) {
     const auto body = text.find('\n', end);
-    check_ascii_vertex_block(text, body == std::string::npos ? text.size() : body + 1, nv, name);
+    const std::size_t faces_at = check_ascii_vertex_block(
+        text, body == std::string::npos ? text.size() : body + 1, nv, name, vertex_properties);
+    check_ascii_ply_faces(text, faces_at, nf, nv, name);
   }
 }
 
