@@ -74,8 +74,36 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     return true;
   };
 
-  // A tab for one side, as wide as fits (full width, then narrower), or nothing.
-  auto try_side = [&](const Seam& seam, int k) -> std::optional<Tab> {
+  auto edge_length = [&](const SeamSide& s) {
+    if (s.piece < 0) return 0.0;
+    const OutlineEdge& e = pieces[s.piece].outline_mm[s.loop][s.index];
+    return norm(e.b - e.a);
+  };
+
+  // Which seam each outline edge belongs to, and which seams are settled (tab placed or dropped).
+  std::vector<std::vector<std::vector<int>>> seam_at(pieces.size());
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    for (const OutlineLoop& loop : pieces[p].outline_mm)
+      seam_at[p].emplace_back(loop.size(), -1);
+  for (std::size_t i = 0; i < seams.size(); ++i)
+    for (const SeamSide& s : seams[i].sides)
+      if (s.piece >= 0) seam_at[s.piece][s.loop][s.index] = static_cast<int>(i);
+  std::vector<char> settled(seams.size(), 0);
+
+  // The share of a corner's free angle a tab may take: all of it when the neighbour edge will never
+  // carry a tab (it is this seam's partner, a settled seam without a tab here, or no seam at all), else
+  // half, so that the neighbour's tab can take the other half.
+  auto corner_cap = [&](const SeamSide& s, int neighbour, int seam, double free) {
+    const int other = seam_at[s.piece][s.loop][neighbour];
+    const bool open =
+        other == seam || other < 0 || (settled[other] && !state[s.piece].has_tab[s.loop][neighbour]);
+    return open ? std::max(0.5 * free, free - 0.12) : 0.5 * free;
+  };
+
+  // A tab for one side: the largest that fits. The full edge first, full width then narrower; then a
+  // stretch of the edge only (its inner ends are mid-edge, free 180°), slid along the edge so that it
+  // finds the edge's widest free part, e.g. the mouth of a narrow notch.
+  auto try_side = [&](const Seam& seam, int seam_index, int k) -> std::optional<Tab> {
     const SeamSide& s = seam.sides[k];
     if (s.piece < 0) return std::nullopt;
     const OutlineLoop& loop = pieces[s.piece].outline_mm[s.loop];
@@ -85,36 +113,56 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     const OutlineEdge& next = loop[(s.index + 1) % n];
     const double length = norm(e.b - e.a);
     if (length <= 0) return std::nullopt;
-    // Half the free angle at each corner: the neighbour edge's tab may take the other half.
-    const double free_a = clockwise_angle(e.b - e.a, prev.a - e.a);
-    const double free_b = clockwise_angle(next.b - e.b, e.a - e.b);
-    // A tab along p->q (a stretch of the edge) whose corners have free angles free_p, free_q.
-    auto attempt = [&](Vec2 p, Vec2 q, double free_p, double free_q) -> std::optional<Tab> {
-      const double stretch = norm(q - p);
-      double w =
-          std::min(options.width_mm, std::max(options.width_per_length * stretch, options.min_width_mm));
-      for (; w >= options.min_width_mm - 1e-9; w *= 0.8) {
-        // Gentle slants first; steeper ones (still within half the free angle) when the edge is short.
-        for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
-          const double slant_p = std::min(cap, 0.5 * free_p), slant_q = std::min(cap, 0.5 * free_q);
-          Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
-          const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
-          if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
-          if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
-        }
+    const double free_a =
+        corner_cap(s, (s.index + n - 1) % n, seam_index, clockwise_angle(e.b - e.a, prev.a - e.a));
+    const double free_b =
+        corner_cap(s, (s.index + 1) % n, seam_index, clockwise_angle(next.b - e.b, e.a - e.b));
+    // A tab along p->q (a stretch of the edge) whose slants are at most limit_p, limit_q.
+    auto attempt = [&](Vec2 p, Vec2 q, double limit_p, double limit_q, double w) -> std::optional<Tab> {
+      // Gentle slants first; steeper ones (still within the corner's share) when the edge is short.
+      for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
+        const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
+        Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
+        const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
+        if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
+        if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
       }
       return std::nullopt;
     };
-    if (auto tab = attempt(e.a, e.b, free_a, free_b)) return tab;
-    // In a narrow notch the corner at the notch's tip leaves no room; the wide part of the edge, towards
-    // the notch's mouth, often does: a tab along that part only (its inner end is mid-edge, free 180°).
-    for (double part : {0.6, 0.4}) {
-      if (part * length < 2 * options.min_width_mm) break;
-      const Vec2 cut = free_a < free_b ? e.b + (e.a - e.b) * part : e.a + (e.b - e.a) * part;
-      auto tab = free_a < free_b ? attempt(cut, e.b, kPi, free_b) : attempt(e.a, cut, free_a, kPi);
-      if (tab) return tab;
+    const double top =
+        std::min(options.width_mm, std::max(options.width_per_length * length, options.min_width_mm));
+    std::vector<double> widths;
+    for (double w = top; w >= options.min_width_mm - 1e-9; w *= 0.8)
+      widths.push_back(w);
+    if (widths.empty() || widths.back() > options.min_width_mm + 1e-9) widths.push_back(options.min_width_mm);
+    for (double w : widths)
+      if (auto tab = attempt(e.a, e.b, free_a, free_b, w)) return tab;
+    // Stretches: the longest that fits at the widest width, among positions along the edge.
+    std::optional<Tab> best;
+    double best_area = 0;
+    for (double part : {0.75, 0.6, 0.45, 0.33, 0.25, 0.18, 0.12}) {
+      const double stretch = part * length;
+      if (stretch < 1.5 * options.min_width_mm) break;
+      for (double start : {1.0, 0.0, 0.5, 0.25, 0.75}) {
+        const double t0 = start * (1 - part), t1 = t0 + part;
+        const Vec2 p = e.a + (e.b - e.a) * t0, q = e.a + (e.b - e.a) * t1;
+        const double lp = t0 < 1e-9 ? free_a : kPi, lq = t1 > 1 - 1e-9 ? free_b : kPi;
+        for (double w : widths) {
+          if (w * stretch <= best_area) break;
+          if (auto tab = attempt(p, q, lp, lq,
+                                 std::min(w, options.width_per_length * stretch + options.min_width_mm))) {
+            const double area = signed_area(tab->quad_mm);
+            if (area > best_area) {
+              best_area = area;
+              best = std::move(tab);
+            }
+            break;
+          }
+        }
+      }
+      if (best && best->width_mm >= 0.95 * widths.front()) break;
     }
-    return std::nullopt;
+    return best;
   };
 
   auto neighbours_with_tabs = [&](const SeamSide& s) {
@@ -134,8 +182,19 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
     // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
     int first = neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
-    std::optional<Tab> tab = try_side(seam, first);
-    if (!tab) tab = try_side(seam, 1 - first);
+    std::optional<Tab> tab = try_side(seam, index, first);
+    // A full tab on the preferred side is taken as is; otherwise the side that keeps the larger tab.
+    const bool full =
+        tab &&
+        tab->width_mm >= 0.95 * std::min(options.width_mm, options.width_per_length *
+                                                               norm(tab->quad_mm[3] - tab->quad_mm[0])) &&
+        norm(tab->quad_mm[3] - tab->quad_mm[0]) >= 0.999 * edge_length(seam.sides[first]);
+    if (!full) {
+      std::optional<Tab> other = try_side(seam, index, 1 - first);
+      if (other && (!tab || signed_area(other->quad_mm) > 1.2 * signed_area(tab->quad_mm)))
+        tab = std::move(other);
+    }
+    settled[index] = 1;
     if (!tab) {
       plan.dropped.push_back(index);
       continue;
