@@ -112,11 +112,15 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
       label.piece = side.piece;
       label.text = text;
       label.hint = hint;
-      auto full_width = [&](double h) {
+      // With an assembly hint, the hint goes first when the side is crowded: the step is also in the
+      // assembly list, and a number clear of every line matters more.
+      auto full_width = [&](double h, bool with_hint) {
         double w = label_width_mm(text, h, o);
-        if (!hint.empty()) w += 0.3 * h + label_width_mm(hint, 0.75 * h, o);
+        if (with_hint && !hint.empty()) w += 0.3 * h + label_width_mm(hint, 0.75 * h, o);
         return w;
       };
+      std::vector<bool> hint_choices{true};
+      if (!hint.empty()) hint_choices.push_back(false);
       const double preferred = std::clamp(o.per_length * length, o.min_mm, o.max_mm);
       // Largest first: a label as big as its edge allows is the easiest to find.
       std::vector<double> heights;
@@ -132,28 +136,41 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
         const Vec2 dir = normalized(e.a - e.b);
         const Vec2 mid = 0.5 * (tab->quad_mm[0] + tab->quad_mm[3]);
         const double tallest = tab->width_mm - o.gap_mm - o.clearance_mm;
-        for (double h : heights) {
-          if (h > tallest || placed) continue;
-          const double w = full_width(h);
-          const Vec2 at = mid - dir * (0.5 * w) + perp_ccw(dir) * o.gap_mm;
-          Polygon box = label_box(at, dir, w, h);
-          bool inside = true;
-          for (Vec2 c : box)
-            inside = inside && inside_convex(tab->quad_mm, c, o.clearance_mm * 0.5);
-          if (!inside) continue;
-          label = Label{label.seam, k, side.piece, text, at, dir, h, true, false, hint, box};
-          placed = true;
-        }
+        for (bool with_hint : hint_choices)
+          for (double h : heights) {
+            if (h > tallest || placed) continue;
+            const double w = full_width(h, with_hint);
+            const Vec2 at = mid - dir * (0.5 * w) + perp_ccw(dir) * o.gap_mm;
+            Polygon box = label_box(at, dir, w, h);
+            bool inside = true;
+            for (Vec2 c : box)
+              inside = inside && inside_convex(tab->quad_mm, c, o.clearance_mm * 0.5);
+            if (!inside) continue;
+            label = Label{label.seam, k, side.piece, text,  at,
+                          dir,        h, true,       false, with_hint ? hint : std::string(),
+                          box};
+            placed = true;
+          }
       }
       if (!placed) {
         const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
         static constexpr std::array<double, 9> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.12, 0.88};
-        // Clear of every line first; then, rather than shrink below the legible minimum or pile onto
-        // another label, across a fold line; then touching the outline. Never on another label.
-        for (int level : {0, 1, 2}) {
+        // Clear of every line first (with the hint, then without it); then, rather than shrink below the
+        // legible minimum or pile onto another label, across a fold line; then touching the outline.
+        struct Try {
+          int level;
+          bool with_hint;
+        };
+        std::vector<Try> tries{{0, true}};
+        if (!hint.empty()) tries.push_back({0, false});
+        const bool hint_last = hint.empty();
+        tries.push_back({1, hint_last});
+        tries.push_back({2, hint_last});
+        for (const Try& attempt : tries) {
+          const int level = attempt.level;
           for (double h : heights) {
             if (placed) break;
-            const double w = full_width(h);
+            const double w = full_width(h, attempt.with_hint);
             for (double lift : {o.gap_mm, o.gap_mm + 0.4 * h, o.gap_mm + 0.9 * h}) {
               for (double t : kAlong) {
                 const Vec2 at = e.a + dir * (t * length - 0.5 * w) + up * lift;
@@ -161,7 +178,9 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
                 const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
                 if (!inside_piece(side.piece, centre) || !clear_of_everything(side.piece, box, level))
                   continue;
-                label = Label{label.seam, k, side.piece, text, at, dir, h, false, false, hint, box};
+                label = Label{label.seam, k, side.piece, text,  at,
+                              dir,        h, false,      false, attempt.with_hint ? hint : std::string(),
+                              box};
                 label.over_fold = level == 1;
                 label.crowded = level == 2;
                 placed = true;
@@ -172,10 +191,19 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
           }
         }
         if (!placed) {
-          const double h = o.min_mm, w = full_width(h);
+          const double h = o.min_mm, w = full_width(h, hint_last);
           const Vec2 at = 0.5 * (e.a + e.b) - dir * (0.5 * w) + up * o.gap_mm;
-          label =
-              Label{label.seam, k, side.piece, text, at, dir, h, false, true, hint, label_box(at, dir, w, h)};
+          label = Label{label.seam,
+                        k,
+                        side.piece,
+                        text,
+                        at,
+                        dir,
+                        h,
+                        false,
+                        true,
+                        hint_last ? hint : std::string(),
+                        label_box(at, dir, w, h)};
         }
       }
       obstacles[side.piece].labels.push_back(label.box_mm);
