@@ -4,6 +4,8 @@
 // paper is an error that names a size that does fit.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -304,16 +306,26 @@ TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
   for (std::size_t i = 0; i < numbers.size(); ++i)
     EXPECT_EQ(numbers[i], static_cast<int>(i) + 1);
   int list_lines = 0, step_marks = 0;
+  std::set<std::string> steps_shown;
   for (const Sheet& sheet : r.sheets)
     for (const Text& t : sheet.texts) {
       if (t.role != PathRole::Hint) continue;
-      if (t.piece < 0)
+      if (t.piece < 0) {
         ++list_lines;
-      else
+      } else {
         ++step_marks;
+        steps_shown.insert(t.text);
+      }
     }
   EXPECT_GT(list_lines, 1);
-  EXPECT_EQ(step_marks, 2 * ex.unfolding.seam_count());
+  // A crowded side drops its step mark before its number touches a line; most seams keep it on one
+  // side at least (all keep it in the list).
+  EXPECT_LE(step_marks, 2 * ex.unfolding.seam_count());
+  int missing = 0;
+  for (int step = 1; step <= ex.unfolding.seam_count(); ++step)
+    missing += steps_shown.count("(" + std::to_string(step) + ")") == 0;
+  EXPECT_LE(missing, ex.unfolding.seam_count() / 10) << missing << " seams without a step mark";
+  std::printf("%d of %d seams without a step mark on the sheets\n", missing, ex.unfolding.seam_count());
 }
 
 TEST(Layout, UnusableOptionsAreLayoutErrors) {

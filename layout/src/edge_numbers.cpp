@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace foldkit::layout {
 namespace {
@@ -100,12 +101,16 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
   for (std::size_t s = 0; s < seams.size(); ++s) {
     const std::string text = std::to_string(numbers[s]);
     const std::string hint = s < hints.size() ? hints[s] : std::string();
-    for (int k = 0; k < 2; ++k) {
+    // The side with a tab first: its label has room there for the hint. The hint may be dropped on a
+    // crowded side, but every seam keeps its step on one side at least.
+    const auto& seam_tab = tabs.tab_of_seam.size() > s ? tabs.tab_of_seam[s] : std::nullopt;
+    const int first = seam_tab && seam_tab->side == 1 ? 1 : 0;
+    auto place = [&](int k, bool may_drop_hint) -> std::optional<Label> {
       const SeamSide& side = seams[s].sides[k];
-      if (side.piece < 0) continue;
+      if (side.piece < 0) return std::nullopt;
       const OutlineEdge& e = pieces[side.piece].outline_mm[side.loop][side.index];
       const double length = norm(e.b - e.a);
-      if (length <= 0) continue;
+      if (length <= 0) return std::nullopt;
       Label label;
       label.seam = static_cast<int>(s);
       label.side = k;
@@ -120,7 +125,7 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
         return w;
       };
       std::vector<bool> hint_choices{true};
-      if (!hint.empty()) hint_choices.push_back(false);
+      if (may_drop_hint) hint_choices.push_back(false);
       const double preferred = std::clamp(o.per_length * length, o.min_mm, o.max_mm);
       // Largest first: a label as big as its edge allows is the easiest to find.
       std::vector<double> heights;
@@ -162,8 +167,8 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
           bool with_hint;
         };
         std::vector<Try> tries{{0, true}};
-        if (!hint.empty()) tries.push_back({0, false});
-        const bool hint_last = hint.empty();
+        if (may_drop_hint) tries.push_back({0, false});
+        const bool hint_last = !may_drop_hint;
         tries.push_back({1, hint_last});
         tries.push_back({2, hint_last});
         for (const Try& attempt : tries) {
@@ -206,10 +211,47 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
                         label_box(at, dir, w, h)};
         }
       }
-      obstacles[side.piece].labels.push_back(label.box_mm);
-      obstacles[side.piece].label_boxes.push_back(bounds_of(label.box_mm));
-      labels.push_back(std::move(label));
+      return label;
+    };
+    // How far a label is from clear: on the tab or clear of every line, across a fold, touching.
+    auto cost = [](const std::optional<Label>& l) { return !l ? 0 : l->crowded ? 2 : l->over_fold ? 1 : 0; };
+    auto shows_hint = [](const std::optional<Label>& l) { return l && !l->hint.empty(); };
+    auto commit = [&](const std::optional<Label>& l) {
+      if (!l) return;
+      obstacles[l->piece].labels.push_back(l->box_mm);
+      obstacles[l->piece].label_boxes.push_back(bounds_of(l->box_mm));
+      labels.push_back(*l);
+    };
+    auto retract = [&](const std::optional<Label>& l) {
+      if (!l) return;
+      obstacles[l->piece].labels.pop_back();
+      obstacles[l->piece].label_boxes.pop_back();
+      labels.pop_back();
+    };
+    const int second = 1 - first;
+    std::optional<Label> a = place(first, !hint.empty());
+    commit(a);
+    std::optional<Label> b = place(second, !hint.empty() && shows_hint(a));
+    if (!hint.empty() && !shows_hint(a) && cost(b) > 0) {
+      // The first side dropped the step and the second is crowded with it: keep the step on whichever
+      // side suffers least from it (crossing a fold line is fine), or, when a number would touch the
+      // outline or another label either way, on neither (the assembly list still has it).
+      std::optional<Label> b_free = place(second, true);
+      retract(a);
+      std::optional<Label> a2 = place(first, false);
+      commit(a2);
+      std::optional<Label> b2 = place(second, true);
+      const int with_a = cost(a) + cost(b), with_a2 = cost(a2) + cost(b2), with_none = cost(a) + cost(b_free);
+      if (with_a2 < with_a && with_a2 <= with_none) {
+        a = std::move(a2);
+        b = std::move(b2);
+      } else {
+        retract(a2);
+        commit(a);
+        if (std::min(with_a, with_a2) >= 2 && with_none < std::min(with_a, with_a2)) b = std::move(b_free);
+      }
     }
+    commit(b);
   }
   return labels;
 }
