@@ -51,8 +51,8 @@ class Walker {
          std::uint64_t seed)
       : ctx_(ctx), m_(*ctx.mesh), opt_(opt), cons_(opt.constraints), rng_(seed), tree_(ctx, initial_fold) {
     join_all_pieces(tree_, cons_);
-    best_ = tree_.overlap_count();
-    best_fold_ = tree_.fold_flags();
+    best_ = run_best_ = tree_.overlap_count();
+    best_fold_ = run_fold_ = tree_.fold_flags();
     tabu_until_.assign(m_.num_edges(), 0);
   }
 
@@ -140,15 +140,20 @@ class Walker {
       tabu_until_[best_cut] = tabu_until_[best_attach] = steps_ + opt_.tabu_tenure;
       ++moves_;
     }
-    if (tree_.overlap_count() < best_) {
-      best_ = tree_.overlap_count();
-      best_fold_ = tree_.fold_flags();
+    if (tree_.overlap_count() < run_best_) {
+      run_best_ = tree_.overlap_count();
+      run_fold_ = tree_.fold_flags();
       stall_ = 0;
+      if (opt_.episode_best) kicks_since_restart_ = 0;
+      if (run_best_ < best_) {
+        best_ = run_best_;
+        best_fold_ = run_fold_;
+      }
     } else if (++stall_ >= opt_.restart_after && opt_.kicks_per_restart > 0 &&
                kicks_since_restart_ < opt_.kicks_per_restart) {
-      // Back to the best tree, then a few forced moves: stays near the best tree (which a fresh
-      // tree would throw away) while changing enough to escape its local minimum.
-      tree_ = CutTree(ctx_, best_fold_);
+      // Back to the best tree of this episode, then a few forced moves: stays near it (which a
+      // fresh tree would throw away) while changing enough to escape its local minimum.
+      tree_ = CutTree(ctx_, run_fold_);
       std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
       kick_ = opt_.kick_moves;
       stall_ = 0;
@@ -157,7 +162,8 @@ class Walker {
     } else if (stall_ >= opt_.restart_after) {
       kicks_since_restart_ = 0;
       // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but
-      // different enough to leave a region the walk keeps returning to.
+      // different enough to leave a region the walk keeps returning to. It starts a new episode:
+      // its descent is not cut short by kicks back to the old best tree.
       std::vector<double> w = ctx_.weight;
       std::uniform_real_distribution<double> noise(0.0, 0.3);
       for (double& x : w)
@@ -166,9 +172,13 @@ class Walker {
       std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
       stall_ = 0;
       ++restarts_;
+      if (opt_.episode_best) {
+        run_best_ = tree_.overlap_count();
+        run_fold_ = tree_.fold_flags();
+      }
       if (tree_.overlap_count() < best_) {
-        best_ = tree_.overlap_count();
-        best_fold_ = tree_.fold_flags();
+        best_ = run_best_ = tree_.overlap_count();
+        best_fold_ = run_fold_ = tree_.fold_flags();
       }
     }
   }
@@ -179,8 +189,9 @@ class Walker {
   const EdgeConstraints& cons_;
   std::mt19937_64 rng_;
   CutTree tree_;
-  int best_ = 0;
-  std::vector<char> best_fold_;
+  // Fewest overlapping pairs overall and in this episode (since the last fresh tree), with their trees.
+  int best_ = 0, run_best_ = 0;
+  std::vector<char> best_fold_, run_fold_;
   std::vector<int> tabu_until_;
   std::vector<int> side_, attach_, near_;
   int steps_ = 0, moves_ = 0, restarts_ = 0;

@@ -22,6 +22,9 @@ struct SearchOptions {
   /// Stalls answered by going back to the best tree plus `kick_moves` forced moves, before a fresh tree.
   int kicks_per_restart = 20;
   int kick_moves = 3;
+  /// Kicks go back to the best tree since the last fresh tree (not the best overall), and a kick that
+  /// leads to a new best of the episode resets the kick count: a fresh tree gets its own descent.
+  bool episode_best = true;
   /// Moves an edge stays tabu after being cut or folded.
   int tabu_tenure = 12;
   /// Re-attach edges tried per cut edge (the first next to the cut edge, the others anywhere).
@@ -29,7 +32,7 @@ struct SearchOptions {
   /// Whether the first re-attach edge tried shares a vertex with the cut edge.
   bool near_first = true;
   /// How many overlapping pairs the best move of a step may add (0: never go uphill).
-  int max_uphill = 0;
+  int max_uphill = 1;
   /// Independent walks (walk k uses seed + k), advanced in rounds of `round_steps` steps each; after a
   /// round the lowest-numbered walk that reached one piece wins. Their number, not `threads`, decides
   /// the result, so the same seed gives the same cuts whatever the thread count.
