@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "foldkit/layout/polygon.hpp"
+#include "foldkit/layout/split.hpp"
 #include "foldkit/layout/tabs.hpp"
 #include "layout_fixtures.hpp"
 
@@ -76,4 +78,40 @@ TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
   EXPECT_TRUE(plan.dropped.empty());
   for (const auto& tab : plan.tab_of_seam)
     ASSERT_TRUE(tab.has_value());
+}
+
+// The default unfolding (one search piece, split to fit A4 at 150 mm) leaves few seams without a tab.
+// Most of those left are slits: both sides meet at a vertex of small angular defect, and even at the
+// slit's mouth the gap is narrower than the narrowest tab; no tab shape fits there.
+TEST(Tabs, OnTheDefaultUnfoldingOfRealExamplesFewTabsAreDropped) {
+  for (const char* name : {"spot_350.obj", "fish_350.obj", "penguin_500.obj"}) {
+    const auto& ex = test::unfolded_example(name, unfold::Method::Search);
+    LayoutOptions o;
+    o.size_mm = 150;
+    const SplitResult split = split_to_fit(ex.mesh, ex.unfolding, o);
+    const auto pieces = scaled_pieces(split.unfolding, 150 / split.unfolding.model_extent);
+    const auto seams = find_seams(split.unfolding, pieces);
+    const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
+    int slits = 0;
+    for (int s : plan.dropped) {
+      const SeamSide& a = seams[s].sides[0];
+      const SeamSide& b = seams[s].sides[1];
+      if (a.piece != b.piece || a.loop != b.loop) continue;
+      const OutlineLoop& loop = pieces[a.piece].outline_mm[a.loop];
+      const int n = static_cast<int>(loop.size());
+      const bool adjacent = (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
+      if (!adjacent) continue;
+      const OutlineEdge& first = (a.index + 1) % n == b.index ? loop[a.index] : loop[b.index];
+      const OutlineEdge& second = (a.index + 1) % n == b.index ? loop[b.index] : loop[a.index];
+      // first ends where second starts (the slit's tip): the gap between their far ends.
+      const double mouth = norm(first.a - second.b);
+      slits += mouth < TabOptions{}.min_width_mm + 0.5;
+    }
+    const double all = static_cast<double>(plan.dropped.size()) / seams.size();
+    const double others = static_cast<double>(plan.dropped.size() - slits) / seams.size();
+    std::printf("%s: %zu seams, %zu dropped (%.1f%%), %d of them slits; others %.1f%%\n", name, seams.size(),
+                plan.dropped.size(), 100 * all, slits, 100 * others);
+    EXPECT_LT(all, 0.25) << name;
+    EXPECT_LT(others, 0.08) << name;
+  }
 }
