@@ -35,6 +35,7 @@ struct PieceState {
   std::vector<Box2> triangle_box;
   std::vector<Polygon> tab_shapes;
   std::vector<Box2> tab_box;
+  std::vector<int> tab_seam;               // the seam of each tab shape
   std::vector<std::vector<char>> has_tab;  // per loop, per outline index
 };
 
@@ -177,7 +178,9 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     sequence.resize(seams.size());
     std::iota(sequence.begin(), sequence.end(), 0);
   }
-  for (int index : sequence) {
+  // Places the tab of one seam (the preferred side's, or the other side's when that keeps a larger
+  // tab); false when neither side has room.
+  auto place = [&](int index) {
     const Seam& seam = seams[index];
     // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
     // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
@@ -195,17 +198,80 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
         tab = std::move(other);
     }
     settled[index] = 1;
-    if (!tab) {
-      plan.dropped.push_back(index);
-      continue;
-    }
+    if (!tab) return false;
     tab->seam = index;
     const SeamSide& s = seam.sides[tab->side];
     PieceState& ps = state[s.piece];
     ps.tab_shapes.push_back(test_shape(tab->quad_mm));
     ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
+    ps.tab_seam.push_back(index);
     ps.has_tab[s.loop][s.index] = 1;
     plan.tab_of_seam[index] = std::move(tab);
+    return true;
+  };
+  auto remove = [&](int index) {
+    const Tab& tab = *plan.tab_of_seam[index];
+    const SeamSide& s = seams[index].sides[tab.side];
+    PieceState& ps = state[s.piece];
+    for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
+      if (ps.tab_seam[k] == index) {
+        ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
+        ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
+        ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
+        break;
+      }
+    ps.has_tab[s.loop][s.index] = 0;
+    plan.tab_of_seam[index].reset();
+  };
+
+  std::vector<int> dropped;
+  for (int index : sequence)
+    if (!place(index)) dropped.push_back(index);
+
+  // Repair: a seam left without a tab is often blocked by one neighbour's tab that would also fit
+  // elsewhere (the other side, or narrower). Take that tab away, place this seam's, and put the
+  // neighbour's back; keep the swap only when both seams end up with a tab.
+  for (int index : dropped) {
+    bool repaired = false;
+    Box2 reach;
+    for (const SeamSide& side : seams[index].sides) {
+      if (side.piece < 0) continue;
+      const OutlineEdge& e = pieces[side.piece].outline_mm[side.loop][side.index];
+      reach.add(e.a);
+      reach.add(e.b);
+    }
+    reach = Box2{reach.min - Vec2{options.width_mm, options.width_mm},
+                 reach.max + Vec2{options.width_mm, options.width_mm}};
+    std::vector<int> near;
+    for (const SeamSide& side : seams[index].sides) {
+      if (side.piece < 0) continue;
+      const PieceState& ps = state[side.piece];
+      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
+        if (reach.overlaps(ps.tab_box[k])) near.push_back(ps.tab_seam[k]);
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (int other : near) {
+      if (!plan.tab_of_seam[other]) continue;
+      const Tab kept = *plan.tab_of_seam[other];
+      remove(other);
+      if (place(index)) {
+        if (place(other)) {
+          repaired = true;
+          break;
+        }
+        remove(index);
+      }
+      // Put the neighbour's tab back exactly as it was.
+      const SeamSide& s = seams[other].sides[kept.side];
+      PieceState& ps = state[s.piece];
+      ps.tab_shapes.push_back(test_shape(kept.quad_mm));
+      ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
+      ps.tab_seam.push_back(other);
+      ps.has_tab[s.loop][s.index] = 1;
+      plan.tab_of_seam[other] = kept;
+    }
+    if (!repaired) plan.dropped.push_back(index);
   }
   std::sort(plan.dropped.begin(), plan.dropped.end());
   return plan;
