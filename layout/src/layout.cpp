@@ -373,8 +373,25 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     std::string list;
     for (int s : d.tabs.dropped)
       list += (list.empty() ? "" : ", ") + std::to_string(d.numbers[s]);
-    r.notes.push_back(std::to_string(d.tabs.dropped.size()) +
-                      " seam(s) without a glue tab (no room on either side): " + list);
+    // A slit: both sides meet at a vertex and their far ends are closer than a tab is wide. No tab fits
+    // there; the maker closes it edge to edge (tape behind).
+    int slits = 0;
+    for (int s : d.tabs.dropped) {
+      const SeamSide& a = d.seams[s].sides[0];
+      const SeamSide& b = d.seams[s].sides[1];
+      if (a.piece < 0 || a.piece != b.piece || a.loop != b.loop) continue;
+      const OutlineLoop& loop = d.pieces[a.piece].outline_mm[a.loop];
+      const int n = static_cast<int>(loop.size());
+      const bool a_first = (a.index + 1) % n == b.index;
+      if (!a_first && (b.index + 1) % n != a.index) continue;
+      const OutlineEdge& first = loop[a_first ? a.index : b.index];
+      const OutlineEdge& second = loop[a_first ? b.index : a.index];
+      slits += norm(first.a - second.b) < std::min(o.min_tab_width_mm, o.tab_width_mm) + 0.5;
+    }
+    r.notes.push_back(
+        std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
+        (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") +
+        "): " + list);
   }
   int crowded = 0, over_fold = 0;
   for (const Label& label : d.labels) {
