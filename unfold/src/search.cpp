@@ -236,8 +236,14 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
     for (auto& t : pool)
       t.join();
   };
-  for_each_walker(
-      [&](int k) { walkers[k] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed + k); });
+  // Walk 0 first runs alone for one full round, on the calling thread: most meshes of up to ~1,000
+  // faces are solved within it, before any other walk is built or any thread started.
+  walkers[0] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed);
+  walkers[0]->run(opt.round_steps, out_of_time);
+  if (!walkers[0]->solved())
+    for_each_walker([&](int k) {
+      if (k > 0) walkers[k] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed + k);
+    });
 
   // Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
   // wins, so the result depends on the seed only (unless the time limit or a cancel stops it).
@@ -269,6 +275,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
 
   SearchResult res;
   for (const auto& w : walkers) {
+    if (!w) continue;
     res.steps += w->steps();
     res.moves += w->moves();
     res.restarts += w->restarts();
