@@ -13,6 +13,7 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/unfold.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -89,6 +90,27 @@ TEST_F(Limits, ABinaryStlClaimingFourBillionTrianglesIsRefusedWithoutAllocatingT
   const auto p = write("claims.stl", binary_stl(0xffffffffu, 1));
   const std::string m = load_error(p);
   EXPECT_NE(m.find("4294967295 triangles"), std::string::npos) << m;
+}
+
+TEST_F(Limits, AConsistentBinaryStlOverTheFaceLimitIsRefusedFromItsHeaderAlone) {
+  // 20 million triangles, size consistent with the count, just under 1 GiB: sparse, so nothing is
+  // written; reading it whole would take seconds and gigabytes before the count check.
+  const fs::path p = write("big.stl", binary_stl(20'000'000u, 0));
+  fs::resize_file(p, 84 + 50 * std::uintmax_t{20'000'000});
+  const std::string m = load_error(p);
+  EXPECT_NE(m.find("20000000 triangles, over the limit of 2000000"), std::string::npos) << m;
+}
+
+TEST_F(Limits, AMeshOverTheUnfoldingFaceLimitIsRefusedWithAHintToDecimate) {
+  const auto mesh = foldkit::unfold::load_mesh(foldkit::test::example_mesh("spot_128.obj")).mesh;
+  foldkit::unfold::UnfoldOptions options;
+  options.face_limit = 100;
+  try {
+    foldkit::unfold::unfold_mesh(mesh, options);
+    FAIL() << "unfolded a mesh over the face limit";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-faces"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(Limits, OffCountsTooLargeForAnyIntegerAreAnErrorNotTakenFromTheNextLine) {

@@ -490,6 +490,17 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply")
     throw InputError(name, "unsupported file type '" + ext + "' (expected .obj, .off, .stl or .ply)");
 
+  if (ext == ".stl" && size >= 84) {
+    // A consistent binary STL states its triangle count up front: refuse one over the limit before
+    // reading (and holding) the whole file.
+    std::ifstream head(path, std::ios::binary);
+    char header[84];
+    if (head.read(header, sizeof header)) {
+      std::uint32_t count = 0;
+      std::memcpy(&count, header + 80, 4);
+      if (84 + 50 * static_cast<std::uint64_t>(count) == size) check_face_limit(count, options.face_limit, name);
+    }
+  }
   const std::string bytes = read_all(path, name);
   if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(name, "empty file (only whitespace)");

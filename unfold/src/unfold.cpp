@@ -18,6 +18,11 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  if (mesh.num_faces() > options.face_limit)
+    throw InputError(mesh.name, std::to_string(mesh.num_faces()) + " faces, more than the " +
+                                    std::to_string(options.face_limit) +
+                                    " foldkit unfolds (no paper model has that many): decimate first, e.g. "
+                                    "--max-faces 5000");
   const EdgeConstraints constraints = resolve_seams(mesh, options.seams);
   UnfoldResult result;
   switch (options.method) {

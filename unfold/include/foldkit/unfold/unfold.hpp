@@ -25,9 +25,12 @@ struct SeamConstraints {
 struct UnfoldOptions {
   Method method = Method::Search;  ///< default: the repair search (bench: one piece where mst leaves many)
   std::uint64_t seed = 1;
-  double time_limit_s = 60;   ///< wall-clock budget for GA/search
-  int threads = 0;            ///< 0: as many as the hardware has
-  int population = 64;        ///< GA population size
+  double time_limit_s = 60;  ///< wall-clock budget for GA/search
+  int threads = 0;           ///< 0: as many as the hardware has
+  int population = 64;       ///< GA population size
+  /// Meshes with more faces are refused: no paper model has that many, and the work outside the time
+  /// limit (index building, the final cutting apart) grows with the face count. Decimate first.
+  int face_limit = 100'000;
   /// Fitness weights of §5.3: f = λp·Np + λl·Rl + λm·Rm + λb·Rb.
   double lambda_p = 100, lambda_l = 100, lambda_m = 10, lambda_b = 1;
   SeamConstraints seams;
@@ -35,9 +38,9 @@ struct UnfoldOptions {
 
 /// Progress report while unfolding; return false to cancel (the best result so far is returned).
 struct UnfoldProgress {
-  std::string stage;   ///< e.g. "ga 70%", "search"
-  int iteration = 0;   ///< generation or move count
-  int pieces = 0;      ///< best number of pieces so far
+  std::string stage;  ///< e.g. "ga 70%", "search"
+  int iteration = 0;  ///< generation or move count
+  int pieces = 0;     ///< best number of pieces so far
   double best_score = 0;
   double seconds = 0;
 };
@@ -46,7 +49,7 @@ using ProgressFn = std::function<bool(const UnfoldProgress&)>;
 struct UnfoldResult {
   Unfolding unfolding;
   double seconds = 0;
-  std::string method;      ///< what produced the result, e.g. "mst", "ga(70%)+search"
+  std::string method;  ///< what produced the result, e.g. "mst", "ga(70%)+search"
   int iterations = 0;
   std::vector<std::string> notes;
 };
