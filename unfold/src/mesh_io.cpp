@@ -498,7 +498,8 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
     if (head.read(header, sizeof header)) {
       std::uint32_t count = 0;
       std::memcpy(&count, header + 80, 4);
-      if (84 + 50 * static_cast<std::uint64_t>(count) == size) check_face_limit(count, options.face_limit, name);
+      if (84 + 50 * static_cast<std::uint64_t>(count) == size)
+        check_face_limit(count, options.face_limit, name);
     }
   }
   const std::string bytes = read_all(path, name);
