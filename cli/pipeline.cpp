@@ -1,6 +1,7 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "foldkit/layout/split.hpp"
 
@@ -14,15 +15,16 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   const auto start = std::chrono::steady_clock::now();
   // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
   // that do, and say so, rather than refuse.
-  layout::SplitResult split =
-      layout::split_to_fit(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, layout_options);
+  layout::SplitLayout done =
+      layout::split_and_layout(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, layout_options);
+  layout::SplitResult& split = done.split;
   if (split.split_pieces > 0) {
     run.unfolded.result.notes.push_back(
         std::to_string(split.split_pieces) + " piece(s) larger than the paper at this size cut into " +
         std::to_string(split.new_pieces) + " parts that fit (--fit keeps them whole)");
     run.unfolded.result.unfolding = std::move(split.unfolding);
   }
-  run.layout = layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
+  run.layout = std::move(done.layout);
   run.layout_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
