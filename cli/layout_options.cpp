@@ -24,6 +24,9 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
       ->check(CLI::Range(0.5, 50.0))
       ->capture_default_str();
   cmd.add_flag("--no-tabs", o.no_tabs, "No glue tabs");
+  cmd.add_flag("--no-split", o.no_split,
+               "Keep every piece whole: a piece larger than the paper is an error naming the largest --size "
+               "that fits");
   cmd.add_flag("--no-numbers", o.no_numbers, "No matching edge numbers");
   cmd.add_flag("--arrows", o.arrows, "Coloured direction arrows on both sides of each seam");
   cmd.add_flag("--hints", o.hints, "Assembly step beside each edge number and a glue-order list");
@@ -52,6 +55,7 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
                        o.landscape ? layout::Orientation::Landscape : layout::Orientation::Portrait);
   out.margin_mm = o.margin_mm;
   out.tabs = !o.no_tabs;
+  out.split_oversized = !o.no_split;
   out.tab_width_mm = o.tab_width_mm;
   out.numbers = !o.no_numbers;
   out.arrows = o.arrows;

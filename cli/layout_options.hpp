@@ -17,6 +17,7 @@ struct LayoutCliOptions {
   double margin_mm = 10;
   double tab_width_mm = 5;
   bool no_tabs = false;
+  bool no_split = false;
   bool no_numbers = false;
   bool arrows = false;
   bool hints = false;

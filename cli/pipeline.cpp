@@ -21,7 +21,7 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   if (split.split_pieces > 0) {
     run.unfolded.result.notes.push_back(
         std::to_string(split.split_pieces) + " piece(s) larger than the paper at this size cut into " +
-        std::to_string(split.new_pieces) + " parts that fit (--fit keeps them whole)");
+        std::to_string(split.new_pieces) + " parts that fit (--fit or --no-split keeps them whole)");
     run.unfolded.result.unfolding = std::move(split.unfolding);
   }
   run.layout = std::move(done.layout);

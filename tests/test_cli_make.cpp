@@ -136,6 +136,7 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
       {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg or .png"},
       {{"make", mesh, "-o", out, "--size", "5m"}, 2, "positive length"},
       {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
+      {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, "largest --size that fits"},
       {{"make", (dir / "missing.obj").string(), "-o", out}, 3, "missing.obj"},
   };
   for (const Case& c : cases) {

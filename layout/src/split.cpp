@@ -148,7 +148,7 @@ int grow_parts(const unfold::Unfolding& u, const std::vector<int>& faces, double
 SplitResult split_to_fit(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutOptions& o,
                          double part_room_fraction, SplitGrowth growth) {
   SplitResult result{u, 0, 0};
-  if (!o.size_mm || o.fit || !(u.model_extent > 0)) return result;
+  if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return result;
   const double scale = *o.size_mm / u.model_extent;
   const Vec2 full_room = piece_room_mm(o);
   const Vec2 part_room = full_room * std::clamp(part_room_fraction, 0.05, 1.0);

@@ -18,6 +18,9 @@ struct LayoutOptions {
   std::optional<double> size_mm;
   /// Largest scale at which the whole model fits on one sheet.
   bool fit = false;
+  /// Pieces larger than the paper at size_mm are cut into parts that fit (split_and_layout); when
+  /// false they stay whole and layout_sheets refuses them, naming the largest size that fits.
+  bool split_oversized = true;
   Vec2 paper_mm{210, 297};  ///< A4 portrait by default (already turned to the wanted orientation)
   double margin_mm = 10;
   /// Folds whose |angle| is below this (radians) are not drawn.

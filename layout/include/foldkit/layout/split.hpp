@@ -26,8 +26,8 @@ enum class SplitGrowth { Fewest, Tree, Round };
 /// Cuts every piece that does not fit piece_room_mm(options) at options.size_mm into parts that fit
 /// that room scaled by `part_room_fraction` (1: as large as the sheet allows), growing each part over
 /// the piece's folds for as long as it fits, then merging neighbouring parts that fit together. Without a
-/// size (fit mode) nothing is split. A single face larger than the room stays whole (layout_sheets
-/// then reports the largest size that fits).
+/// size (fit mode) or with options.split_oversized off nothing is split. A single face larger than the room
+/// stays whole (layout_sheets then reports the largest size that fits).
 SplitResult split_to_fit(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding,
                          const LayoutOptions& options, double part_room_fraction = 1.0,
                          SplitGrowth growth = SplitGrowth::Fewest);
