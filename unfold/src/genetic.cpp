@@ -97,8 +97,7 @@ class GaRun {
  public:
   GaRun(const UnfoldContext& ctx, const GaOptions& opt, double share, std::uint64_t seed, int components,
         Clock::time_point deadline, std::atomic<bool>& cancel)
-      : ctx_(ctx),
-        opt_(opt),
+      : opt_(opt),
         share_(share),
         rng_(seed),
         components_(components),
@@ -202,7 +201,6 @@ class GaRun {
     if (fold_out) *fold_out = tree.fold_flags();
   }
 
-  const UnfoldContext& ctx_;
   const GaOptions& opt_;
   double share_;
   std::mt19937_64 rng_;
