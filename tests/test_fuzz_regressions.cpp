@@ -99,3 +99,15 @@ TEST(FuzzRegressions, ProfileInputsEndInAnInputErrorOrLoad) {
     }
   }
 }
+
+TEST(FuzzRegressions, AnOffFaceLineWithAHugeCountAndNoIndicesIsRefusedNamingTheFace) {
+  // OpenMesh read 3,689,023 indices from a failed stream for this line: 464 million triangles and
+  // seconds of work before any limit could say no (found by fuzz_load_off in CI).
+  const fs::path input = regressions() / "fuzz_load_off" / "face_count_without_indices.off";
+  try {
+    foldkit::unfold::load_mesh(input);
+    FAIL() << "loaded";
+  } catch (const foldkit::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unparsable vertex list '3689023'"), std::string::npos) << e.what();
+  }
+}

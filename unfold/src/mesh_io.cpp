@@ -305,10 +305,12 @@ std::size_t check_ascii_vertex_block(const std::string& text, std::size_t pos, s
   return static_cast<std::size_t>(std::min(p, end) - text.c_str());
 }
 
-// ASCII PLY faces: a count of at least 3 then that many indices below `vertices`, one face per line.
-// OpenMesh's reader loops forever on some malformed face blocks (found by fuzz_load_ply).
-void check_ascii_ply_faces(const std::string& text, std::size_t pos, std::uint64_t faces,
-                           std::uint64_t vertices, const std::string& name) {
+// ASCII PLY and OFF faces: a count of at least 3 then that many indices below `vertices` (OFF may add
+// a colour after them), one face per line. OpenMesh's readers loop forever on some malformed face
+// blocks, or take a huge count on a line without indices as that many vertices to read from a failed
+// stream (found by fuzz_load_ply and fuzz_load_off).
+void check_ascii_faces(const std::string& text, std::size_t pos, std::uint64_t faces, std::uint64_t vertices,
+                       const std::string& name) {
   std::istringstream in(text.substr(pos));
   std::string line;
   std::uint64_t f = 0;
@@ -371,9 +373,11 @@ void check_off_header(const std::string& text, const std::string& name, int face
                         binary ? 16 : 8, text.size(), name);
   if (!binary) {
     const auto after_counts = in.tellg();
-    if (after_counts >= 0)
-      check_ascii_vertex_block(text, static_cast<std::size_t>(after_counts), static_cast<std::uint64_t>(nv),
-                               name);
+    if (after_counts >= 0) {
+      const std::size_t faces_at = check_ascii_vertex_block(text, static_cast<std::size_t>(after_counts),
+                                                            static_cast<std::uint64_t>(nv), name);
+      check_ascii_faces(text, faces_at, static_cast<std::uint64_t>(nf), static_cast<std::uint64_t>(nv), name);
+    }
   }
 }
 
@@ -460,7 +464,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
     const auto body = text.find('\n', end);
     const std::size_t faces_at = check_ascii_vertex_block(
         text, body == std::string::npos ? text.size() : body + 1, nv, name, vertex_properties);
-    check_ascii_ply_faces(text, faces_at, nf, nv, name);
+    check_ascii_faces(text, faces_at, nf, nv, name);
   }
 }
 
