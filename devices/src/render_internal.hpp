@@ -17,10 +17,18 @@ inline constexpr std::array<PathRole, 7> kPaintOrder = {PathRole::Tab,      Path
 
 /// Colour `tint` (>= 0) of a palette of twelve colours that stay apart on paper (Path::tint).
 inline Rgb tint_colour(int tint) {
-  static constexpr std::array<Rgb, 12> kPalette = {{{0.90, 0.10, 0.10}, {0.10, 0.45, 0.85}, {0.05, 0.60, 0.20},
-                                                     {0.95, 0.55, 0.00}, {0.55, 0.20, 0.75}, {0.00, 0.65, 0.65},
-                                                     {0.85, 0.20, 0.60}, {0.45, 0.30, 0.10}, {0.50, 0.65, 0.00},
-                                                     {0.15, 0.15, 0.55}, {0.75, 0.45, 0.45}, {0.35, 0.35, 0.35}}};
+  static constexpr std::array<Rgb, 12> kPalette = {{{0.90, 0.10, 0.10},
+                                                    {0.10, 0.45, 0.85},
+                                                    {0.05, 0.60, 0.20},
+                                                    {0.95, 0.55, 0.00},
+                                                    {0.55, 0.20, 0.75},
+                                                    {0.00, 0.65, 0.65},
+                                                    {0.85, 0.20, 0.60},
+                                                    {0.45, 0.30, 0.10},
+                                                    {0.50, 0.65, 0.00},
+                                                    {0.15, 0.15, 0.55},
+                                                    {0.75, 0.45, 0.45},
+                                                    {0.35, 0.35, 0.35}}};
   return kPalette[static_cast<std::size_t>(tint) % kPalette.size()];
 }
 

@@ -12,8 +12,8 @@
 #include "foldkit/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("foldkit-fuzz-profile-" + std::to_string(::getpid()) + ".toml");
+  static const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                            ("foldkit-fuzz-profile-" + std::to_string(::getpid()) + ".toml");
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));

@@ -9,12 +9,12 @@ namespace foldkit {
 /// Exit codes the CLI returns for each error class.
 enum class ExitCode : int {
   Success = 0,
-  Failure = 1,     ///< anything unexpected
-  Usage = 2,       ///< bad command line
-  Input = 3,       ///< unreadable or invalid input file (mesh, profile, seam list)
-  Output = 4,      ///< cannot write an output file
-  Layout = 5,      ///< the model cannot be laid out as asked (piece larger than the sheet…)
-  Device = 6,      ///< device not found, busy, permission, timeout, out of bounds
+  Failure = 1,  ///< anything unexpected
+  Usage = 2,    ///< bad command line
+  Input = 3,    ///< unreadable or invalid input file (mesh, profile, seam list)
+  Output = 4,   ///< cannot write an output file
+  Layout = 5,   ///< the model cannot be laid out as asked (piece larger than the sheet…)
+  Device = 6,   ///< device not found, busy, permission, timeout, out of bounds
   Interrupted = 130,
 };
 

@@ -13,13 +13,20 @@ enum class PathRole { Cut, Mountain, Valley, Tab, Label, Hint, RegMark };
 /// Lower-case name of a role ("cut", "mountain", …): SVG group ids, profile keys, JSON.
 inline const char* role_name(PathRole r) {
   switch (r) {
-    case PathRole::Cut: return "cut";
-    case PathRole::Mountain: return "mountain";
-    case PathRole::Valley: return "valley";
-    case PathRole::Tab: return "tab";
-    case PathRole::Label: return "label";
-    case PathRole::Hint: return "hint";
-    case PathRole::RegMark: return "regmark";
+    case PathRole::Cut:
+      return "cut";
+    case PathRole::Mountain:
+      return "mountain";
+    case PathRole::Valley:
+      return "valley";
+    case PathRole::Tab:
+      return "tab";
+    case PathRole::Label:
+      return "label";
+    case PathRole::Hint:
+      return "hint";
+    case PathRole::RegMark:
+      return "regmark";
   }
   return "?";
 }
@@ -29,8 +36,8 @@ struct Path {
   PathRole role = PathRole::Cut;
   std::vector<Vec2> points_mm;
   bool closed = false;
-  int piece = -1;      ///< piece index, -1 when the path belongs to no piece (marks, hints)
-  bool filled = false; ///< drawn filled (registration square); cutters ignore fills
+  int piece = -1;       ///< piece index, -1 when the path belongs to no piece (marks, hints)
+  bool filled = false;  ///< drawn filled (registration square); cutters ignore fills
   /// Paths that must be told apart within a role (the direction arrows of seam pairs) carry an index
   /// into the renderer's palette of distinguishable colours; -1 draws the role's own colour.
   int tint = -1;

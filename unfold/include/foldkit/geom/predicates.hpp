@@ -14,14 +14,19 @@ namespace foldkit {
 using Triangle2 = std::array<Vec2, 3>;
 
 /// Twice the signed area of abc: positive when counter-clockwise.
-constexpr double orient2d(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
+constexpr double orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  return cross(b - a, c - a);
+}
 
 /// Signed area of a triangle (positive when counter-clockwise).
-constexpr double signed_area(const Triangle2& t) { return 0.5 * orient2d(t[0], t[1], t[2]); }
+constexpr double signed_area(const Triangle2& t) {
+  return 0.5 * orient2d(t[0], t[1], t[2]);
+}
 
 inline Box2 bounds(const Triangle2& t) {
   Box2 b;
-  for (Vec2 p : t) b.add(p);
+  for (Vec2 p : t)
+    b.add(p);
   return b;
 }
 
@@ -37,7 +42,8 @@ inline bool triangles_overlap(const Triangle2& a, const Triangle2& b, double eps
       double len = norm(e);
       if (len == 0) continue;
       double deepest = -1e300;
-      for (Vec2 v : q) deepest = std::fmax(deepest, cross(e, v - p[i]) / len);
+      for (Vec2 v : q)
+        deepest = std::fmax(deepest, cross(e, v - p[i]) / len);
       if (deepest <= eps) return true;
     }
     return false;

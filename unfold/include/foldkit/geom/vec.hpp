@@ -13,18 +13,37 @@ struct Vec2 {
   friend constexpr Vec2 operator*(Vec2 a, double s) { return {a.x * s, a.y * s}; }
   friend constexpr Vec2 operator*(double s, Vec2 a) { return {a.x * s, a.y * s}; }
   friend constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.y / s}; }
-  constexpr Vec2& operator+=(Vec2 b) { x += b.x; y += b.y; return *this; }
-  constexpr Vec2& operator-=(Vec2 b) { x -= b.x; y -= b.y; return *this; }
+  constexpr Vec2& operator+=(Vec2 b) {
+    x += b.x;
+    y += b.y;
+    return *this;
+  }
+  constexpr Vec2& operator-=(Vec2 b) {
+    x -= b.x;
+    y -= b.y;
+    return *this;
+  }
   friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
 };
 
-constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+constexpr double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
 /// z of the 3D cross product: positive when b is counter-clockwise from a.
-constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
-inline Vec2 normalized(Vec2 a) { double n = norm(a); return n > 0 ? a / n : Vec2{}; }
+constexpr double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+inline double norm(Vec2 a) {
+  return std::hypot(a.x, a.y);
+}
+inline Vec2 normalized(Vec2 a) {
+  double n = norm(a);
+  return n > 0 ? a / n : Vec2{};
+}
 /// a rotated by +90 degrees (counter-clockwise).
-constexpr Vec2 perp_ccw(Vec2 a) { return {-a.y, a.x}; }
+constexpr Vec2 perp_ccw(Vec2 a) {
+  return {-a.y, a.x};
+}
 inline Vec2 rotated(Vec2 a, double radians) {
   double c = std::cos(radians), s = std::sin(radians);
   return {c * a.x - s * a.y, s * a.x + c * a.y};
@@ -41,12 +60,19 @@ struct Vec3 {
   friend constexpr bool operator==(Vec3 a, Vec3 b) = default;
 };
 
-constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(Vec3 a, Vec3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
-inline Vec3 normalized(Vec3 a) { double n = norm(a); return n > 0 ? a / n : Vec3{}; }
+inline double norm(Vec3 a) {
+  return std::sqrt(dot(a, a));
+}
+inline Vec3 normalized(Vec3 a) {
+  double n = norm(a);
+  return n > 0 ? a / n : Vec3{};
+}
 
 /// Axis-aligned box in the plane.
 struct Box2 {
@@ -56,7 +82,12 @@ struct Box2 {
     min = {std::fmin(min.x, p.x), std::fmin(min.y, p.y)};
     max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y)};
   }
-  void add(const Box2& b) { if (!b.empty()) { add(b.min); add(b.max); } }
+  void add(const Box2& b) {
+    if (!b.empty()) {
+      add(b.min);
+      add(b.max);
+    }
+  }
   double width() const { return max.x - min.x; }
   double height() const { return max.y - min.y; }
   bool overlaps(const Box2& b) const {
