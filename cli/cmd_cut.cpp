@@ -196,6 +196,11 @@ void setup_cut(CLI::App& app) {
     const bool simulated = args->dry_run || (args->device.empty() && args->output.empty());
     if (!args->sim_faults.empty() && !simulated)
       throw Error("--sim-fault needs the simulated device (--dry-run)", ExitCode::Usage);
+    if (args->dry_run && !args->output.empty())
+      throw Error(
+          "--dry-run sends the job to the simulated device and -o writes it to a file: choose one "
+          "(the simulated device's rendering goes to --preview)",
+          ExitCode::Usage);
     if (args->device.empty() && !args->output.empty())
       throw Error("-o needs --device: the stream's language and units depend on the plotter",
                   ExitCode::Usage);

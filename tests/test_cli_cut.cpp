@@ -113,6 +113,11 @@ TEST(CliCut, WritesTheStreamToAFileInTheDevicesLanguage) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("speaks GP-GL"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "wrong.plt"));
+  // -o used to be ignored silently beside --dry-run.
+  r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--dry-run", "-o", "job.png"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("choose one"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "job.png"));
 }
 
 TEST(CliCut, RefusesASheetThatDoesNotFitTheCuttingAreaBeforeSendingAnything) {
