@@ -15,7 +15,7 @@ struct PipelineRun {
 };
 
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
-/// for the paper at the asked --size are first cut into parts that fit (layout::split_to_fit; noted).
+/// for the paper at the asked --size are first cut into parts that fit (layout::split_and_layout; noted).
 /// Throws InputError (mesh), LayoutError (does not fit) or Error.
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line);
