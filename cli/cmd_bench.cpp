@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_layout.hpp"
 #include "commands.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
@@ -357,11 +358,25 @@ void setup_bench(CLI::App& app) {
   cmd->add_option("--reference", a->reference,
                   "Directory of the reference CSVs (default CORPUS/../reference)");
   cmd->add_option("--filter", a->filter, "Only meshes whose file name contains this text");
+  auto layout = std::make_shared<bool>(false);
+  cmd->add_flag(
+      "--layout", *layout,
+      "Benchmark the layout instead: sheets, area bound, parts, coverage and seams without a tab per "
+      "mesh at 150 and 250 mm on A4 (meshes up to --max-faces, lowpoly/ included)");
   // Internal: what each child process runs.
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");
-  cmd->callback([a] {
-    if (!a->one.empty())
+  cmd->callback([a, layout, cmd] {
+    if (*layout) {
+      LayoutBenchArgs l;
+      l.corpus = a->corpus;
+      l.min_faces = a->min_faces;
+      if (cmd->count("--max-faces") > 0) l.max_faces = a->max_faces;
+      l.filter = a->filter;
+      if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
+      l.json_out = a->json_out;
+      run_layout_bench(l);
+    } else if (!a->one.empty())
       run_one(*a);
     else
       run_bench(*a);

@@ -1,7 +1,9 @@
 // `foldkit unfold MESH -o net.obj [--json]`: the flat net alone, for inspection or other tools.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <ostream>
@@ -12,6 +14,8 @@
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/error.hpp"
+#include "layout_options.hpp"
+#include "pipeline.hpp"
 #include "unfold_options.hpp"
 
 namespace foldkit::cli {
@@ -23,11 +27,12 @@ struct UnfoldArgs {
   bool json = false;
   bool quiet = false;
   UnfoldCliOptions unfold;
+  LayoutCliOptions layout;
 };
 
 // One OBJ vertex per group of flat corners joined through folds: corners of one mesh vertex in one
 // piece share a vertex where the piece is folded there, and no vertex is shared between pieces.
-void write_net_obj(std::ostream& out, const unfold::Mesh& mesh, const unfold::Unfolding& u) {
+std::vector<int> net_vertices(const unfold::Unfolding& u) {
   const int nf = u.num_faces();
   std::vector<int> parent(static_cast<std::size_t>(nf) * 3);
   std::iota(parent.begin(), parent.end(), 0);
@@ -44,25 +49,87 @@ void write_net_obj(std::ostream& out, const unfold::Mesh& mesh, const unfold::Un
     parent[find(a0)] = find(b0);
     parent[find(a1)] = find(b1);
   }
-  std::vector<int> index(parent.size(), -1);
-  int next = 1;
-  out << "# foldkit flat net of " << mesh.name << ": " << nf << " faces, " << u.piece_count << " pieces\n";
-  out.precision(17);
-  for (int c = 0; c < 3 * nf; ++c) {
-    int r = find(c);
-    if (index[r] >= 0) continue;
-    index[r] = next++;
-    Vec2 p = u.flat[r / 3][r % 3];
-    out << "v " << p.x << ' ' << p.y << " 0\n";
+  for (std::size_t c = 0; c < parent.size(); ++c)
+    parent[c] = find(static_cast<int>(c));
+  return parent;
+}
+
+// The outline of one input polygon: its triangles' corners (as net vertex ids) around the loop of
+// edges that no two of its triangles share. Empty when a cut runs between its triangles (possible only
+// for a polygon that is not planar; its triangles then go out one by one).
+std::vector<int> polygon_loop(const unfold::Unfolding& u, const std::vector<int>& vertex,
+                              const std::vector<int>& faces) {
+  if (faces.size() == 1) return {vertex[faces[0] * 3], vertex[faces[0] * 3 + 1], vertex[faces[0] * 3 + 2]};
+  std::map<int, int> next;
+  for (int f : faces)
+    for (int c = 0; c < 3; ++c) {
+      const unfold::UnfoldEdge& e = u.edges[u.face_edges[f][c]];
+      const int other = e.face[0] == f ? e.face[1] : e.face[0];
+      const bool inside = !e.cut && std::find(faces.begin(), faces.end(), other) != faces.end();
+      if (inside) continue;
+      if (!next.emplace(vertex[f * 3 + c], vertex[f * 3 + (c + 1) % 3]).second) return {};
+    }
+  std::vector<int> loop{next.begin()->first};
+  while (loop.size() <= next.size()) {
+    auto it = next.find(loop.back());
+    if (it == next.end()) return {};
+    if (it->second == loop.front()) break;
+    loop.push_back(it->second);
   }
+  if (loop.size() != next.size()) return {};
+  return loop;
+}
+
+// Face k of the net is face k of the input file; only a non-planar polygon that the unfolding cut
+// apart is written as its triangles (said in the header).
+void write_net_obj(std::ostream& out, const unfold::Mesh& mesh, const unfold::Unfolding& u) {
+  const int nf = u.num_faces();
+  const std::vector<int> vertex = net_vertices(u);
+  int polygons = 0;
+  for (int f = 0; f < nf; ++f)
+    polygons = std::max(polygons, mesh.polygon_of(f) + 1);
+  std::vector<std::vector<int>> faces_of(polygons);
+  for (int f = 0; f < nf; ++f)
+    faces_of[mesh.polygon_of(f)].push_back(f);
+  std::vector<std::vector<int>> loops;
+  int folded = 0;
+  for (const auto& faces : faces_of) {
+    if (faces.empty()) continue;
+    std::vector<int> loop = polygon_loop(u, vertex, faces);
+    if (!loop.empty()) {
+      loops.push_back(std::move(loop));
+      continue;
+    }
+    ++folded;
+    for (int f : faces)
+      loops.push_back({vertex[f * 3], vertex[f * 3 + 1], vertex[f * 3 + 2]});
+  }
+  std::vector<int> index(vertex.size(), -1);
+  int next = 1;
+  out << "# foldkit flat net of " << mesh.name << ": " << loops.size() << " faces, " << u.piece_count
+      << " pieces\n";
+  if (folded > 0)
+    out << "# " << folded
+        << " non-planar input face(s) cut apart and written as their triangles: later faces shift\n";
+  out.precision(17);
+  for (const auto& loop : loops)
+    for (int r : loop) {
+      if (index[r] >= 0) continue;
+      index[r] = next++;
+      const Vec2 p = u.flat[r / 3][r % 3];
+      out << "v " << p.x << ' ' << p.y << " 0\n";
+    }
   int current = -1;
-  for (int f = 0; f < nf; ++f) {
-    if (u.piece_of_face[f] != current) {
-      current = u.piece_of_face[f];
+  for (const auto& loop : loops) {
+    const int piece = u.piece_of_face[loop.front() / 3];
+    if (piece != current) {
+      current = piece;
       out << "g piece_" << current << "\n";
     }
-    out << "f " << index[find(f * 3)] << ' ' << index[find(f * 3 + 1)] << ' ' << index[find(f * 3 + 2)]
-        << "\n";
+    out << "f";
+    for (int r : loop)
+      out << ' ' << index[r];
+    out << "\n";
   }
 }
 
@@ -76,10 +143,14 @@ void setup_unfold(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON summary on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_unfold_options(*cmd, args->unfold);
+  // With --size the net is cut into the parts `make` would lay out on that paper.
+  add_layout_options(*cmd, args->layout);
   cmd->callback([args] {
     finish_unfold_options(args->unfold);
+    const layout::LayoutOptions layout_options = to_layout_options(args->layout);
     ProgressLine line(!args->quiet);
     UnfoldRun run = load_and_unfold(args->mesh, args->unfold, line);
+    choose_and_note_parts(run.loaded.mesh, run.result, layout_options);
     line.clear();
     const unfold::Unfolding& u = run.result.unfolding;
     if (!args->output.empty())

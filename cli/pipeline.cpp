@@ -1,30 +1,58 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <utility>
 
-#include "foldkit/layout/split.hpp"
+#include "choose_parts.hpp"
+#include "foldkit/error.hpp"
 
 namespace foldkit::cli {
+namespace {
+
+// --time-limit bounds the whole command; the unfolders stop early with a valid result, the layout
+// cannot, so the unfolding gets this share and the layout the rest.
+constexpr double kUnfoldShareOfTimeLimit = 0.75;
+
+}  // namespace
+
+void choose_and_note_parts(const unfold::Mesh& mesh, unfold::UnfoldResult& result,
+                           const layout::LayoutOptions& layout_options) {
+  // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
+  // that do, and say so, rather than refuse.
+  ChosenParts parts = choose_parts(mesh, result.unfolding, layout_options);
+  if (parts.split_pieces > 0)
+    result.notes.push_back(
+        std::to_string(parts.split_pieces) + " piece(s) larger than the paper at this size cut into " +
+        std::to_string(parts.new_pieces) + " parts that fit (--fit or --no-split keeps them whole)");
+  result.unfolding = std::move(parts.unfolding);
+}
 
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line) {
+  const double limit_s = unfold_options.unfold.time_limit_s;
+  const auto deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limit_s));
+  UnfoldCliOptions unfold_share = unfold_options;
+  unfold_share.unfold.time_limit_s = kUnfoldShareOfTimeLimit * limit_s;
+  layout::LayoutOptions bounded = layout_options;
+  bounded.deadline = deadline;
+
   PipelineRun run;
-  run.unfolded = load_and_unfold(mesh_file, unfold_options, line);
+  run.unfolded = load_and_unfold(mesh_file, unfold_share, line);
   line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
   const auto start = std::chrono::steady_clock::now();
-  // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
-  // that do, and say so, rather than refuse.
-  layout::SplitLayout done =
-      layout::split_and_layout(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, layout_options);
-  layout::SplitResult& split = done.split;
-  if (split.split_pieces > 0) {
-    run.unfolded.result.notes.push_back(
-        std::to_string(split.split_pieces) + " piece(s) larger than the paper at this size cut into " +
-        std::to_string(split.new_pieces) + " parts that fit (--fit or --no-split keeps them whole)");
-    run.unfolded.result.unfolding = std::move(split.unfolding);
+  try {
+    choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, bounded);
+    run.layout = layout::layout_sheets(run.unfolded.result.unfolding, bounded);
+  } catch (const LayoutError& e) {
+    if (std::chrono::steady_clock::now() <= deadline) throw;
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", limit_s);
+    throw LayoutError(mesh_file + ": " + e.what() + " (--time-limit " + limit +
+                      " s bounds the whole command: give more time, a smaller --size or --max-faces)");
   }
-  run.layout = std::move(done.layout);
   run.layout_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -14,8 +14,13 @@ struct PipelineRun {
   double layout_seconds = 0;
 };
 
+/// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
+/// any split in result.notes. What `make` lays out and `unfold --size` writes.
+void choose_and_note_parts(const unfold::Mesh& mesh, unfold::UnfoldResult& result,
+                           const layout::LayoutOptions& layout_options);
+
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
-/// for the paper at the asked --size are first cut into parts that fit (layout::split_and_layout; noted).
+/// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
 /// Throws InputError (mesh), LayoutError (does not fit) or Error.
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line);

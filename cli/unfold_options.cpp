@@ -17,7 +17,9 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
       ->check(CLI::IsMember({"default", "mst", "search", "ga"}))
       ->group(group);
   cmd.add_option("--seed", o.unfold.seed, "Random seed: the same seed gives the same result")->group(group);
-  cmd.add_option("--time-limit", o.unfold.time_limit_s, "Seconds the search or GA may take (default 60)")
+  cmd.add_option("--time-limit", o.unfold.time_limit_s,
+                 "Seconds the command may take: the search or GA gets 3/4 of it, layout the rest; past it "
+                 "the command stops with a message (default 60)")
       ->check(CLI::Range(0.01, 1e6))
       ->group(group);
   cmd.add_option("--threads", o.unfold.threads, "Worker threads (0: all cores)")
@@ -31,6 +33,12 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--lambda-m", o.unfold.lambda_m, "GA fitness weight of the sheet margin")->group(group);
   cmd.add_option("--lambda-b", o.unfold.lambda_b, "GA fitness weight of matching-edge distance")
       ->group(group);
+  cmd.add_option(
+         "--flat-angle", o.flat_angle_deg,
+         "Degrees within which a polygon, or a run of triangles, counts as one flat face that is never "
+         "cut (default 0.5)")
+      ->check(CLI::Range(0.0, 30.0))
+      ->group(group);
   cmd.add_option("--cut", o.cut_file, "File of edges (vertex index pairs) that must be cut")->group(group);
   cmd.add_option("--keep", o.keep_file, "File of edges (vertex index pairs) that must stay folded")
       ->group(group);
@@ -40,6 +48,7 @@ void finish_unfold_options(UnfoldCliOptions& o) {
   static const std::map<std::string, unfold::Method> methods = {
       {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
   if (auto it = methods.find(o.method); it != methods.end()) o.unfold.method = it->second;
+  o.unfold.flat_angle_rad = o.flat_angle_deg * 3.14159265358979323846 / 180.0;
   if (!o.cut_file.empty()) o.unfold.seams.force_cut = unfold::read_edge_list(o.cut_file);
   if (!o.keep_file.empty()) o.unfold.seams.forbid_cut = unfold::read_edge_list(o.keep_file);
 }

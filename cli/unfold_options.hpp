@@ -16,6 +16,7 @@ struct UnfoldCliOptions {
   unfold::UnfoldOptions unfold;
   std::string method = "default";
   std::string cut_file, keep_file;
+  double flat_angle_deg = 0.5;  ///< --flat-angle
 };
 
 /// Adds --max-faces, --method, --seed, --time-limit, --threads, --population, --lambda-p/-l/-m/-b,

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "foldkit/layout/polygon.hpp"
-#include "foldkit/layout/split.hpp"
 #include "foldkit/layout/tabs.hpp"
+#include "foldkit/unfold/parts.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -88,7 +88,10 @@ TEST(Tabs, OnTheDefaultUnfoldingOfRealExamplesFewTabsAreDropped) {
     const auto& ex = test::unfolded_example(name, unfold::Method::Search);
     LayoutOptions o;
     o.size_mm = 150;
-    const SplitResult split = split_to_fit(ex.mesh, ex.unfolding, o);
+    unfold::PartOptions parts;
+    parts.room_mm = piece_room_mm(o);
+    parts.mm_per_unit = 150 / ex.unfolding.model_extent;
+    const unfold::PartsResult split = unfold::split_into_parts(ex.mesh, ex.unfolding, parts);
     const auto pieces = scaled_pieces(split.unfolding, 150 / split.unfolding.model_extent);
     const auto seams = find_seams(split.unfolding, pieces);
     const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});

@@ -18,7 +18,7 @@ std::vector<FoldLine> fold_lines(const unfold::Unfolding& u, const ScaledPiece& 
       const int e = u.face_edges[f][c];
       const unfold::UnfoldEdge& edge = u.edges[e];
       // Each fold is shared by two faces of the piece: draw it from face[0]'s side only.
-      if (edge.cut || edge.boundary() || edge.face[0] != f) continue;
+      if (edge.cut || edge.boundary() || edge.inside_face || edge.face[0] != f) continue;
       if (std::fabs(edge.fold_angle) < options.flat_fold_rad) continue;
       Vec2 a = piece.triangles_mm[k][c], b = piece.triangles_mm[k][(c + 1) % 3];
       const double length = norm(b - a);

@@ -208,6 +208,9 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   const Vec2 area_size{area.width(), area.height()};
 
   Draft d = draw_pieces(u, o, scale);
+  if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
+    throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
+                      " pieces, before packing them");
   std::vector<PackItem> items = pack_items_of(d, piece_room_mm(o));
   const std::size_t piece_items = items.size();
   std::vector<ListBlock> blocks;
@@ -227,6 +230,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   pack_options.cell_mm = o.pack_cell_mm;
   pack_options.rotations = o.rotations;
   pack_options.max_sheets = max_sheets;
+  pack_options.deadline = o.deadline;
   if (o.regmarks)
     for (const Box2& b : regmark_keep_out(o.paper_mm, o.regmark))
       pack_options.keep_out_mm.push_back(flip_box(b, paper_h));

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <utility>
+
+#include "foldkit/error.hpp"
 
 namespace foldkit::layout {
 namespace {
@@ -18,6 +21,7 @@ struct Raster {
   Vec2 origin;  // item-frame point (after rotation) at the raster's lower-left cell corner
   int width = 0, height = 0;
   std::vector<std::vector<std::pair<int, int>>> runs;  // per row: inclusive [i0, i1]
+  std::vector<int> widest_run;                         // per row: the longest run, in cells
   long cells = 0;
   double centroid_x = 0, centroid_y = 0;  // mean cell position, in cells from the raster origin
 };
@@ -69,7 +73,9 @@ Raster rasterize(std::span<const Polygon> shape, double angle, double grow, doub
         row.push_back({i0, i1});
       }
     }
+    r.widest_run.push_back(0);
     for (auto [i0, i1] : r.runs[j]) {
+      r.widest_run.back() = std::max(r.widest_run.back(), i1 - i0 + 1);
       const long n = i1 - i0 + 1;
       r.cells += n;
       r.centroid_x += 0.5 * (i0 + i1) * n;
@@ -89,7 +95,11 @@ Raster rasterize(std::span<const Polygon> shape, double angle, double grow, doub
 class SheetGrid {
  public:
   SheetGrid(int nx, int ny)
-      : nx_(nx), ny_(ny), taken_(std::size_t(nx) * ny, 0), last_taken_(taken_.size(), -1) {
+      : nx_(nx),
+        ny_(ny),
+        taken_(std::size_t(nx) * ny, 0),
+        last_taken_(taken_.size(), -1),
+        widest_free_(ny, nx) {
     free_ = long(nx) * ny;
   }
 
@@ -106,11 +116,21 @@ class SheetGrid {
       if (!cell) --free_;
       cell = 1;
     }
-    int last = -1;
+    int last = -1, widest = 0;
     for (int x = 0; x < nx_; ++x) {
       if (taken_[std::size_t(y) * nx_ + x]) last = x;
       last_taken_[std::size_t(y) * nx_ + x] = last;
+      widest = std::max(widest, x - last);
     }
+    widest_free_[y] = widest;
+  }
+
+  // False when some row of r, with its bottom row at y, is wider than any free run of the sheet row it
+  // would lie on: the cheap test that skips the full rows of a filling sheet.
+  bool rows_may_fit(const Raster& r, int y) const {
+    for (int j = 0; j < r.height; ++j)
+      if (widest_free_[y + j] < r.widest_run[j]) return false;
+    return true;
   }
 
   // Smallest x >= from at which raster r, with its bottom row at y, meets no taken cell; -1 if none.
@@ -141,6 +161,7 @@ class SheetGrid {
   int nx_, ny_;
   std::vector<std::uint8_t> taken_;
   std::vector<int> last_taken_;
+  std::vector<int> widest_free_;  // per row: the longest run of free cells
   long free_ = 0;
 };
 
@@ -160,6 +181,7 @@ Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
     for (int y = grid.ny() - r.height; y >= 0; --y) {
       const double score_y = y + r.centroid_y;
       if (score_y < best.score_y - 1e-9) break;
+      if (!grid.rows_may_fit(r, y)) continue;
       const int x = grid.first_fit_in_row(r, y, 0);
       if (x < 0) continue;
       const double score_x = x + r.centroid_x;
@@ -256,6 +278,10 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
     std::vector<SheetGrid> sheets;
     int last_lowest = ny;
     for (int index : order) {
+      if (options.deadline && std::chrono::steady_clock::now() > *options.deadline)
+        throw LayoutError(
+            "stopped at the time limit while packing: " + std::to_string(&index - order.data()) + " of " +
+            std::to_string(order.size()) + " pieces placed");
       Spot spot;
       int sheet = 0;
       for (; sheet < static_cast<int>(sheets.size()); ++sheet) {

@@ -86,29 +86,6 @@ bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset) {
   return true;
 }
 
-Polygon convex_hull(std::vector<Vec2> points) {
-  std::sort(points.begin(), points.end(),
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3) return points;
-  // Andrew's monotone chain.
-  Polygon hull(2 * points.size());
-  std::size_t k = 0;
-  for (Vec2 p : points) {
-    while (k >= 2 && orient2d(hull[k - 2], hull[k - 1], p) <= 0)
-      --k;
-    hull[k++] = p;
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    Vec2 p = points[i];
-    while (k >= lower && orient2d(hull[k - 2], hull[k - 1], p) <= 0)
-      --k;
-    hull[k++] = p;
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
 std::vector<Polygon> polygon_union(std::span<const Polygon> polygons) {
   ClipperLib::Clipper clipper;
   clipper.AddPaths(to_clipper(polygons), ClipperLib::ptSubject, true);

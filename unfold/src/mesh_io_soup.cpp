@@ -126,22 +126,29 @@ bool is_zero_area(const std::vector<Vec3>& p, const Tri& t) {
   return norm(cross(b - a, c - a)) <= kZeroAreaRelative * l2 || l2 == 0.0;
 }
 
-std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::string>& notes) {
+// tri_polygon gets, per triangle, the file's face index of its polygon (polygon_index[p]).
+std::vector<Tri> triangulate_all(const PolygonSoup& soup, const std::vector<int>& polygon_index,
+                                 std::vector<int>& tri_polygon, std::vector<std::string>& notes) {
   std::vector<Tri> tris;
   tris.reserve(soup.polygons.size());
+  tri_polygon.clear();
   std::size_t quads = 0, ngons = 0;
   std::vector<Vec3> pts;
-  for (const auto& poly : soup.polygons) {
+  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
+    const auto& poly = soup.polygons[p];
     if (poly.size() == 3) {
       tris.push_back({poly[0], poly[1], poly[2]});
+      tri_polygon.push_back(polygon_index[p]);
       continue;
     }
     (poly.size() == 4 ? quads : ngons)++;
     pts.clear();
     for (int v : poly)
       pts.push_back(soup.vertices[v]);
-    for (const Tri& t : triangulate_polygon(pts))
+    for (const Tri& t : triangulate_polygon(pts)) {
       tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
+      tri_polygon.push_back(polygon_index[p]);
+    }
   }
   if (quads + ngons > 0)
     notes.push_back("triangulated " + plural(quads, "quad") + " and " + plural(ngons, "n-gon"));
@@ -256,7 +263,9 @@ std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri
 // Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
 // collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
 // opposite edge is removed by flipping that edge with the neighbour across it.
-std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, const std::string& name) {
+// tri_polygon (one per triangle) follows the triangles that are kept.
+std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, std::vector<int>& tri_polygon,
+                             const std::string& name) {
   std::size_t fixed = 0;
   for (int pass = 0; pass < 32; ++pass) {
     std::vector<int> degenerate;
@@ -341,10 +350,15 @@ std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, 
       ++progress;  // the flipped-in pair covers what the neighbour covered: the cap is gone
     }
     std::vector<Tri> kept;
+    std::vector<int> kept_polygon;
     kept.reserve(tris.size());
     for (std::size_t f = 0; f < tris.size(); ++f)
-      if (!removed[f]) kept.push_back(tris[f]);
+      if (!removed[f]) {
+        kept.push_back(tris[f]);
+        kept_polygon.push_back(tri_polygon[f]);
+      }
     tris = std::move(kept);
+    tri_polygon = std::move(kept_polygon);
     fixed += progress;
     if (progress == 0) break;
   }
@@ -428,6 +442,8 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
         v = remap[v];
   }
 
+  std::vector<int> polygon_index(soup.polygons.size());  // the file's face index of each polygon
+  std::iota(polygon_index.begin(), polygon_index.end(), 0);
   std::size_t dropped = 0;
   for (auto& poly : soup.polygons) {
     std::vector<int> clean;
@@ -437,7 +453,14 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
     poly = std::move(clean);
   }
   if (dropped > 0) {
-    std::erase_if(soup.polygons, [](const auto& p) { return p.size() < 3; });
+    std::size_t kept = 0;
+    for (std::size_t p = 0; p < soup.polygons.size(); ++p)
+      if (soup.polygons[p].size() >= 3) {
+        polygon_index[kept] = polygon_index[p];
+        soup.polygons[kept++] = std::move(soup.polygons[p]);
+      }
+    soup.polygons.resize(kept);
+    polygon_index.resize(kept);
     notes.push_back("dropped " + plural(dropped, "face") + " with repeated corners");
     if (soup.polygons.empty()) throw InputError(name, "every face has repeated corners");
   }
@@ -451,7 +474,8 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
     if (unused > 0 && !options.weld_all)
       notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
   }
-  std::vector<Tri> tris = triangulate_all(soup, notes);
+  std::vector<int> tri_polygon;
+  std::vector<Tri> tris = triangulate_all(soup, polygon_index, tri_polygon, notes);
   std::vector<Vec3> points = std::move(soup.vertices);
   if (!options.weld_all) {
     if (const std::size_t seams = weld_boundary_seams(points, tris); seams > 0)
@@ -463,7 +487,7 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   if (const std::size_t flips = orient_consistently(tris, map, name); flips > 0)
     notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
 
-  if (const std::size_t fixed = remove_zero_area(points, tris, name); fixed > 0)
+  if (const std::size_t fixed = remove_zero_area(points, tris, tri_polygon, name); fixed > 0)
     notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
   if (tris.empty()) throw InputError(name, "every face has zero area");
   if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
@@ -507,7 +531,9 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   if (turned > 0) notes.push_back("turned " + plural(turned, "closed component") + " outward");
   if (components > 1)
     notes.push_back(std::to_string(components) + " connected components: unfolded separately");
-  return make_mesh(std::move(used), std::move(tris), name);
+  Mesh mesh = make_mesh(std::move(used), std::move(tris), name);
+  mesh.face_polygon = std::move(tri_polygon);
+  return mesh;
 }
 
 }  // namespace foldkit::unfold::detail

@@ -6,6 +6,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
+#include "foldkit/unfold/flat_faces.hpp"
 #include "foldkit/unfold/genetic.hpp"
 #include "foldkit/unfold/mst.hpp"
 #include "foldkit/unfold/seams.hpp"
@@ -23,7 +24,9 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
                                     std::to_string(options.face_limit) +
                                     " foldkit unfolds (no paper model has that many): decimate first, e.g. "
                                     "--max-faces 5000");
-  const EdgeConstraints constraints = resolve_seams(mesh, options.seams);
+  EdgeConstraints constraints = resolve_seams(mesh, options.seams);
+  const FlatFaces flat = find_flat_faces(mesh, options.flat_angle_rad);
+  keep_flat_faces(mesh, flat, constraints);
   UnfoldResult result;
   switch (options.method) {
     case Method::Mst:
@@ -64,6 +67,10 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       break;
     }
   }
+  mark_flat_faces(flat, result.unfolding);
+  if (flat.non_planar_polygons > 0)
+    result.notes.push_back(std::to_string(flat.non_planar_polygons) +
+                           " polygon(s) not planar within the flat angle: folded along their diagonals");
   if (int components = count_components(mesh); components > 1)
     result.notes.push_back(std::to_string(components) + " connected components unfolded separately");
   result.seconds = elapsed();

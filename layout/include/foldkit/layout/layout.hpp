@@ -2,6 +2,7 @@
 // The layout stage: Unfolding -> sheets. Scales the pieces, draws outlines and folds, adds glue tabs,
 // matching edge numbers, optional direction arrows and assembly hints, packs everything onto sheets
 // and adds registration marks. Built from the small modules beside this header.
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,8 @@ struct LayoutOptions {
   std::optional<double> size_mm;
   /// Largest scale at which the whole model fits on one sheet.
   bool fit = false;
-  /// Pieces larger than the paper at size_mm are cut into parts that fit (split_and_layout); when
+  /// Pieces larger than the paper at size_mm are cut into parts that fit (by the stage above layout that
+  /// chooses the parts: layout itself never re-cuts an unfolding); when
   /// false they stay whole and layout_sheets refuses them, naming the largest size that fits.
   bool split_oversized = true;
   Vec2 paper_mm{210, 297};  ///< A4 portrait by default (already turned to the wanted orientation)
@@ -44,6 +46,8 @@ struct LayoutOptions {
   double spacing_mm = 2;      ///< least gap between pieces (with tabs) on a sheet
   int rotations = 8;          ///< evenly spaced rotations tried per piece when packing
   double pack_cell_mm = 0.5;  ///< packing raster resolution
+  /// When set, layout stops here with a LayoutError ("stopped at the time limit …").
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 /// Figures for one sheet, or the whole layout.

@@ -5,6 +5,7 @@
 // sheet is opened. Shapes are rasterised conservatively (every cell the grown shape touches is taken),
 // so placed items never overlap and keep at least `spacing_mm` apart, and concave pieces can nest
 // into each other's bays and holes.
+#include <chrono>
 #include <optional>
 #include <span>
 #include <vector>
@@ -29,6 +30,8 @@ struct PackOptions {
   int rotations = 8;                 ///< evenly spaced rotations tried (4: multiples of 90 degrees)
   /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
   std::optional<int> max_sheets;
+  /// When set, packing stops here with a LayoutError: no input makes it run unbounded.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 /// Where an item went: sheet index and the motion from the item's frame to the sheet frame.
@@ -43,7 +46,8 @@ struct PackResult {
   std::vector<int> unplaced;  ///< items that fit no sheet (too large, or max_sheets reached)
 };
 
-/// Packs `items` (largest first) onto as few sheets as the heuristic finds.
+/// Packs `items` (largest first) onto as few sheets as the heuristic finds. Throws LayoutError when the
+/// deadline passes.
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options);
 
 /// The rotation (radians) that makes the points' axis-aligned bounding box smallest in area.

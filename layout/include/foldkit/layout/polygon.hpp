@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "foldkit/geom/hull.hpp"  // convex_hull
 #include "foldkit/geom/predicates.hpp"
 #include "foldkit/geom/vec.hpp"
 
@@ -36,9 +37,6 @@ bool convex_overlap(std::span<const Vec2> a, std::span<const Vec2> b, double eps
 
 /// True when p lies inside the convex counter-clockwise polygon at least `inset` from every edge.
 bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset);
-
-/// Convex hull, counter-clockwise, without collinear points.
-Polygon convex_hull(std::vector<Vec2> points);
 
 /// Union of polygons (non-zero fill): outer boundaries counter-clockwise, holes clockwise.
 std::vector<Polygon> polygon_union(std::span<const Polygon> polygons);

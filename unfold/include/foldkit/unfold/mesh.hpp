@@ -29,10 +29,15 @@ struct Mesh {
   std::vector<std::array<int, 3>> face_edges;
   /// Where the mesh came from (file name), for messages.
   std::string name;
+  /// face_polygon[f]: the 0-based index of the input file's face (polygon) triangle f came from. Empty
+  /// when every triangle is a face of its own (a mesh built in code, or decimated).
+  std::vector<int> face_polygon;
 
   int num_faces() const { return static_cast<int>(faces.size()); }
   int num_vertices() const { return static_cast<int>(vertices.size()); }
   int num_edges() const { return static_cast<int>(edges.size()); }
+  /// The input file's face that triangle f came from (f itself when face_polygon is empty).
+  int polygon_of(int f) const { return face_polygon.empty() ? f : face_polygon[f]; }
   /// Corner positions of face f.
   std::array<Vec3, 3> corners(int f) const {
     return {vertices[faces[f][0]], vertices[faces[f][1]], vertices[faces[f][2]]};

@@ -34,6 +34,9 @@ struct UnfoldOptions {
   /// Fitness weights of §5.3: f = λp·Np + λl·Rl + λm·Rm + λb·Rb.
   double lambda_p = 100, lambda_l = 100, lambda_m = 10, lambda_b = 1;
   SeamConstraints seams;
+  /// Triangles of a planar input polygon, and coplanar neighbours, within this angle of one normal are one
+  /// flat face that is never cut (see flat_faces.hpp).
+  double flat_angle_rad = 0.5 * 3.14159265358979323846 / 180.0;
 };
 
 /// Progress report while unfolding; return false to cancel (the best result so far is returned).

@@ -16,9 +16,10 @@ struct UnfoldEdge {
   /// The (one or two) faces and corners of the mesh edge; face[1] == -1 on a mesh boundary.
   std::array<int, 2> face{-1, -1};
   std::array<int, 2> corner{-1, -1};
-  bool cut = false;       ///< cut (outline) or fold; boundary edges are always cut
-  double fold_angle = 0;  ///< signed dihedral in radians: > 0 mountain, < 0 valley (see fold_angle())
-  double length = 0;      ///< model units
+  bool cut = false;          ///< cut (outline) or fold; boundary edges are always cut
+  double fold_angle = 0;     ///< signed dihedral in radians: > 0 mountain, < 0 valley (see fold_angle())
+  double length = 0;         ///< model units
+  bool inside_face = false;  ///< joins two triangles of one flat face: never cut, never drawn
   bool boundary() const { return face[1] < 0; }
   /// A cut edge with a partner on the other side: the two sides are glued together.
   bool glued_seam() const { return cut && !boundary(); }

@@ -1,0 +1,175 @@
+#include "bench_layout.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "choose_parts.hpp"
+#include "foldkit/error.hpp"
+#include "foldkit/layout/layout.hpp"
+#include "foldkit/layout/paper.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/unfold.hpp"
+
+namespace foldkit::cli {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Row {
+  std::string mesh;
+  int faces = 0;
+  double size_mm = 0;
+  std::string error;
+  long sheets = 0, bound = 0;
+  int parts = 0, seams = 0, no_tab = 0;
+  double coverage = 0, seconds = 0;
+};
+
+std::vector<fs::path> mesh_files(const fs::path& corpus) {
+  static const std::regex ext(R"(\.(obj|off|stl|ply)$)", std::regex::icase);
+  std::vector<fs::path> files;
+  for (const fs::path& dir : {corpus / "lowpoly", corpus})
+    if (fs::is_directory(dir))
+      for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.is_regular_file() && std::regex_search(entry.path().string(), ext))
+          files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout::LayoutOptions o) {
+  Row row;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const ChosenParts parts = choose_parts(mesh, unfolding, o);
+    const layout::LayoutResult r = layout::layout_sheets(parts.unfolding, o);
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Box2 area = layout::printable_area(o);
+    const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
+    row.sheets = static_cast<long>(r.sheets.size());
+    row.bound = std::max(1L, static_cast<long>(std::ceil(used / (area.width() * area.height()) - 1e-9)));
+    row.parts = parts.unfolding.piece_count;
+    row.seams = parts.unfolding.seam_count();
+    row.no_tab = r.overall.dropped_tabs;
+    row.coverage = r.overall.coverage;
+  } catch (const Error& e) {
+    row.error = e.what();
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return row;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+void run_layout_bench(const LayoutBenchArgs& a) {
+  const fs::path corpus = a.corpus.empty() ? fs::path("../shared/meshes") : fs::path(a.corpus);
+  if (!fs::is_directory(corpus))
+    throw InputError(corpus.string(), "no such corpus directory (give --corpus DIR)");
+  const auto paper = layout::parse_paper(a.paper);
+  if (!paper) throw Error("--paper: unknown paper '" + a.paper + "'", ExitCode::Usage);
+
+  std::vector<Row> rows;
+  if (!a.json_out)
+    std::printf(
+        "foldkit bench --layout: %s, %d-%d faces, %s, search unfolding (seed 1)\n%-28s %5s %5s | %6s %5s %5s "
+        "%8s %7s %7s\n",
+        corpus.string().c_str(), a.min_faces, a.max_faces, a.paper.c_str(), "mesh", "faces", "size", "sheets",
+        "bound", "parts", "coverage", "no tab", "s");
+  for (const fs::path& file : mesh_files(corpus)) {
+    if (!a.filter.empty() && file.filename().string().find(a.filter) == std::string::npos) continue;
+    unfold::LoadedMesh loaded;
+    try {
+      loaded = unfold::load_mesh(file);
+    } catch (const Error&) {
+      continue;  // not a usable mesh: the loader has its own tests
+    }
+    if (loaded.mesh.num_faces() < a.min_faces || loaded.mesh.num_faces() > a.max_faces) continue;
+    unfold::UnfoldOptions uo;
+    uo.time_limit_s = a.time_limit_s;
+    const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
+    const std::string name =
+        (file.parent_path().filename() == "lowpoly" ? "lowpoly/" : "") + file.filename().string();
+    for (double size : a.sizes_mm) {
+      layout::LayoutOptions o;
+      o.paper_mm = *paper;
+      o.size_mm = size;
+      Row row = run_one(loaded.mesh, unfolded.unfolding, o);
+      row.mesh = name;
+      row.faces = loaded.mesh.num_faces();
+      row.size_mm = size;
+      if (!a.json_out) {
+        if (!row.error.empty())
+          std::printf("%-28s %5d %5.0f | error: %s\n", name.c_str(), row.faces, size, row.error.c_str());
+        else
+          std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f\n", name.c_str(), row.faces,
+                      size, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab, row.seams,
+                      row.seconds);
+        std::fflush(stdout);
+      }
+      rows.push_back(std::move(row));
+    }
+  }
+
+  long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0, over = 0;
+  double seconds = 0;
+  std::vector<double> coverage;
+  for (const Row& r : rows) {
+    if (!r.error.empty()) continue;
+    sheets += r.sheets;
+    bound += r.bound;
+    over += r.sheets > r.bound + 1;
+    seconds += r.seconds;
+    coverage.push_back(r.coverage);
+    if (r.size_mm == 150 && r.faces >= 350 && r.faces <= 1000) {
+      mid_seams += r.seams;
+      mid_no_tab += r.no_tab;
+    }
+  }
+  const double ratio = bound > 0 ? double(sheets) / double(bound) : NAN;
+  const double share = mid_seams > 0 ? double(mid_no_tab) / double(mid_seams) : NAN;
+  if (a.json_out) {
+    json out{{"rows", json::array()}};
+    for (const Row& r : rows) {
+      json j{{"mesh", r.mesh}, {"faces", r.faces}, {"size_mm", r.size_mm}, {"seconds", r.seconds}};
+      if (!r.error.empty()) {
+        j["error"] = r.error;
+      } else {
+        j.update({{"sheets", r.sheets},
+                  {"area_bound_sheets", r.bound},
+                  {"parts", r.parts},
+                  {"coverage", r.coverage},
+                  {"seams", r.seams},
+                  {"seams_without_tab", r.no_tab}});
+      }
+      out["rows"].push_back(j);
+    }
+    out["totals"] = {{"sheets", sheets},
+                     {"area_bound_sheets", bound},
+                     {"sheets_over_bound", ratio},
+                     {"runs_more_than_one_over", over},
+                     {"median_coverage", median(coverage)},
+                     {"no_tab_share_350_1000_at_150mm", share},
+                     {"seconds", seconds}};
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
+  std::printf(
+      "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
+      "%.0f%%, seams without a tab %ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm, layout %.1f s\n",
+      sheets, bound, ratio, over, 100 * median(coverage), mid_no_tab, mid_seams, 100 * share, seconds);
+}
+
+}  // namespace foldkit::cli

@@ -1,0 +1,24 @@
+#pragma once
+// `foldkit bench --layout`: per mesh and size, what a builder gets on paper (sheets against the area
+// lower bound, parts, coverage, seams without a tab, seconds) and the totals the layout targets are
+// judged by.
+#include <string>
+#include <vector>
+
+namespace foldkit::cli {
+
+struct LayoutBenchArgs {
+  std::string corpus;  ///< directory of meshes; its lowpoly/ subdirectory is included
+  std::vector<double> sizes_mm{150, 250};
+  std::string paper = "A4";
+  int min_faces = 0, max_faces = 1000;
+  std::string filter;
+  double time_limit_s = 60;  ///< for the unfolding of each mesh
+  bool json_out = false;
+};
+
+/// Runs the layout benchmark and prints the table (or JSON) on stdout. Throws InputError when the corpus
+/// directory is missing.
+void run_layout_bench(const LayoutBenchArgs& args);
+
+}  // namespace foldkit::cli

@@ -1,0 +1,53 @@
+// Choosing the parts: candidate partitions judged by packing them, labels left out of the trials.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "choose_parts.hpp"
+#include "foldkit/unfold/parts.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+
+namespace {
+long sheets_with_pieces(const layout::LayoutResult& r) {
+  return std::count_if(r.sheet_stats.begin(), r.sheet_stats.end(),
+                       [](const layout::SheetStats& s) { return s.pieces > 0; });
+}
+
+unfold::PartOptions largest_parts(const unfold::Unfolding& u, const layout::LayoutOptions& o) {
+  unfold::PartOptions p;
+  p.room_mm = layout::piece_room_mm(o);
+  p.mm_per_unit = *o.size_mm / u.model_extent;
+  p.growth = unfold::PartGrowth::Tree;
+  return p;
+}
+}  // namespace
+
+TEST(ChooseParts, SmallerPartsAreKeptWhenTheySaveASheet) {
+  const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  const unfold::PartsResult largest =
+      unfold::split_into_parts(ex.mesh, ex.unfolding, largest_parts(ex.unfolding, o));
+  const layout::LayoutResult plain = layout::layout_sheets(largest.unfolding, o);
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  EXPECT_TRUE(unfold::check_unfolding(ex.mesh, chosen.unfolding).empty());
+  EXPECT_LT(sheets_with_pieces(layout::layout_sheets(chosen.unfolding, o)), sheets_with_pieces(plain))
+      << "spot at 150 mm: parts as large as A4 allows take " << sheets_with_pieces(plain) << " sheets";
+  EXPECT_LE(chosen.unfolding.piece_count, largest.unfolding.piece_count + 8)
+      << "a sheet saved is worth at most 8 more parts";
+  for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e)
+    if (ex.unfolding.edges[e].cut) EXPECT_TRUE(chosen.unfolding.edges[e].cut) << "an old cut was glued back";
+}
+
+TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {
+  const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.fit = true;
+  EXPECT_EQ(cli::choose_parts(ex.mesh, ex.unfolding, o).split_pieces, 0);
+  o.fit = false;
+  o.size_mm = 200;
+  o.split_oversized = false;
+  EXPECT_EQ(cli::choose_parts(ex.mesh, ex.unfolding, o).unfolding.piece_count, ex.unfolding.piece_count);
+}

@@ -1,0 +1,119 @@
+// Parts that fit the sheet: cut from the unfolding along folds, whole flat faces at a time.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "foldkit/error.hpp"
+#include "foldkit/geom/hull.hpp"
+#include "foldkit/layout/layout.hpp"
+#include "foldkit/unfold/flat_faces.hpp"
+#include "foldkit/unfold/parts.hpp"
+#include "layout_fixtures.hpp"
+
+using namespace foldkit;
+using namespace foldkit::unfold;
+
+namespace {
+
+PartOptions room_at(const Unfolding& u, double size_mm, double fraction = 1.0,
+                    PartGrowth growth = PartGrowth::Fewest) {
+  layout::LayoutOptions o;
+  PartOptions p;
+  p.room_mm = layout::piece_room_mm(o);
+  p.mm_per_unit = size_mm / u.model_extent;
+  p.room_fraction = fraction;
+  p.growth = growth;
+  return p;
+}
+
+void expect_parts_fit(const Unfolding& u, const PartOptions& p) {
+  for (const auto& faces : u.piece_faces()) {
+    std::vector<Vec2> points;
+    for (int f : faces)
+      points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
+    EXPECT_GE(fit_in_rect(points, p.room_mm * p.room_fraction).scale, p.mm_per_unit * (1 - 1e-9));
+  }
+}
+
+test::UnfoldedExample lowpoly(const std::string& name) {
+  test::UnfoldedExample ex;
+  ex.mesh = load_mesh(test::source_dir() / "tests" / "data" / "lowpoly" / name).mesh;
+  UnfoldOptions options;
+  options.threads = 1;
+  ex.unfolding = unfold_mesh(ex.mesh, options).unfolding;
+  return ex;
+}
+
+}  // namespace
+
+TEST(Parts, AOnePieceUnfoldingTooLargeForA4IsCutIntoPartsThatFit) {
+  const auto& ex = test::unfolded_example("spot_350.obj", Method::Search);
+  const PartOptions p = room_at(ex.unfolding, 160);
+  const PartsResult parts = split_into_parts(ex.mesh, ex.unfolding, p);
+  ASSERT_GT(parts.split_pieces, 0) << "spot at 160 mm does not fit A4 in one piece";
+  const Unfolding& u = parts.unfolding;
+  EXPECT_TRUE(check_unfolding(ex.mesh, u).empty());
+  EXPECT_GT(u.piece_count, ex.unfolding.piece_count);
+  for (std::size_t e = 0; e < u.edges.size(); ++e)
+    if (ex.unfolding.edges[e].cut) EXPECT_TRUE(u.edges[e].cut) << "an old cut was glued back";
+  expect_parts_fit(u, p);
+}
+
+TEST(Parts, PiecesThatFitAreLeftAlone) {
+  const auto& ex = test::unfolded_example("bob_350.obj");
+  const PartsResult parts = split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, 120));
+  EXPECT_EQ(parts.split_pieces, 0);
+  EXPECT_EQ(parts.unfolding.piece_count, ex.unfolding.piece_count);
+}
+
+TEST(Parts, EveryGrowthGivesPartsThatFitAtEveryRoomFraction) {
+  const auto& ex = test::unfolded_example("fish_350.obj", Method::Search);
+  for (PartGrowth growth : {PartGrowth::Tree, PartGrowth::Round, PartGrowth::Fewest})
+    for (double fraction : {1.0, 0.7, 0.5}) {
+      const PartOptions p = room_at(ex.unfolding, 200, fraction, growth);
+      const PartsResult parts = split_into_parts(ex.mesh, ex.unfolding, p);
+      EXPECT_TRUE(check_unfolding(ex.mesh, parts.unfolding).empty());
+      EXPECT_EQ(parts.unfolding.piece_count,
+                ex.unfolding.piece_count - parts.split_pieces + parts.new_pieces);
+      expect_parts_fit(parts.unfolding, p);
+    }
+}
+
+TEST(Parts, NoFlatFaceIsSeparatedAndNoneIsCutInside) {
+  for (const char* name : {"barn.obj", "cylinder12.obj", "dodecahedron.obj", "football.obj", "l_block.obj"})
+    for (double size : {150.0, 250.0, 400.0})
+      for (PartGrowth growth : {PartGrowth::Tree, PartGrowth::Round}) {
+        const auto ex = lowpoly(name);
+        PartsResult parts;
+        try {
+          parts = split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, size, 1.0, growth));
+        } catch (const LayoutError&) {
+          continue;  // a face larger than A4 at this size: refused, tested below
+        }
+        const Unfolding& u = parts.unfolding;
+        EXPECT_TRUE(check_unfolding(ex.mesh, u).empty()) << name;
+        const FlatFaces flat = find_flat_faces(ex.mesh);
+        for (int e = 0; e < ex.mesh.num_edges(); ++e)
+          if (flat.inside[e]) {
+            EXPECT_FALSE(u.edges[e].cut) << name << " at " << size << " mm: edge " << e;
+            EXPECT_TRUE(u.edges[e].inside_face);
+          }
+        for (int f = 0; f < ex.mesh.num_faces(); ++f)
+          for (int g = 0; g < ex.mesh.num_faces(); ++g)
+            if (ex.mesh.polygon_of(f) == ex.mesh.polygon_of(g))
+              EXPECT_EQ(u.piece_of_face[f], u.piece_of_face[g]) << name << " at " << size << " mm";
+      }
+}
+
+TEST(Parts, AFlatFaceLargerThanTheSheetIsRefusedNamingTheLargestSizeThatFits) {
+  // The barn's long wall (6 x 4 units) at 600 mm for the 6-unit barn is 600 x 400 mm: no A4 holds it.
+  const auto ex = lowpoly("barn.obj");
+  try {
+    split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, 600));
+    FAIL() << "a wall larger than A4 was accepted";
+  } catch (const LayoutError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("flat face"), std::string::npos) << what;
+    EXPECT_NE(what.find("the largest --size that fits is"), std::string::npos) << what;
+  }
+}

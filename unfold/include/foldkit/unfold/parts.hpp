@@ -1,0 +1,47 @@
+#pragma once
+// Parts that fit the sheet. An unfolder that reaches one piece (the point of the seed) often gives a
+// piece larger than a sheet at the size the user wants; rather than refuse, the piece is cut along
+// fold edges into as few parts as a greedy growth finds, each fitting the room the sheet offers. Flat
+// faces are never separated. The input unfolding is left alone: the result is a new unfolding of the
+// same mesh whose cuts are the old cuts plus the new ones, so every part is a sub-tree of an old piece
+// and overlaps nothing.
+#include <vector>
+
+#include "foldkit/geom/vec.hpp"
+#include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/unfolding.hpp"
+
+namespace foldkit::unfold {
+
+/// How parts grow over a piece's folds: breadth-first along the fold tree from the piece's first face,
+/// or round (from one end of the piece's long axis, nearest faces first: compact parts that nest), or
+/// whichever of the two gives fewer parts.
+enum class PartGrowth { Fewest, Tree, Round };
+
+struct PartOptions {
+  /// The rectangle (mm) a part without its tabs must fit at its best rotation: the printable room of a
+  /// sheet less what tabs, spacing and registration marks take (the layout says how much).
+  Vec2 room_mm;
+  double mm_per_unit = 1;  ///< the scale the model is printed at
+  /// Parts are grown to fit room_mm scaled by this (1: as large as the sheet allows; smaller parts pack
+  /// better when cut from a spindly net).
+  double room_fraction = 1.0;
+  PartGrowth growth = PartGrowth::Fewest;
+};
+
+struct PartsResult {
+  Unfolding unfolding;
+  int split_pieces = 0;  ///< pieces that were too large
+  int new_pieces = 0;    ///< parts they were cut into
+};
+
+/// Cuts every piece that does not fit options.room_mm at options.mm_per_unit into parts that fit the
+/// room scaled by options.room_fraction, growing each part over the piece's folds, whole flat faces at
+/// a time, for as long as it fits, then merging neighbouring parts that fit together. Throws LayoutError
+/// when a flat face alone is larger than the room, naming the largest model size that fits.
+PartsResult split_into_parts(const Mesh& mesh, const Unfolding& unfolding, const PartOptions& options);
+
+/// Per face, the flat face it belongs to (faces joined by UnfoldEdge::inside_face), numbered from 0.
+std::vector<int> flat_face_of(const Unfolding& unfolding);
+
+}  // namespace foldkit::unfold

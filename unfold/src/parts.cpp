@@ -1,0 +1,315 @@
+#include "foldkit/unfold/parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <queue>
+#include <string>
+#include <utility>
+
+#include "foldkit/error.hpp"
+#include "foldkit/geom/hull.hpp"
+
+namespace foldkit::unfold {
+namespace {
+
+Vec2 centroid(const Triangle2& t) {
+  return (t[0] + t[1] + t[2]) * (1.0 / 3.0);
+}
+
+// The rotation at which min-area box of the points is smallest (for the long axis of a piece).
+double min_area_angle(const std::vector<Vec2>& points) {
+  const std::vector<Vec2> hull = convex_hull(points);
+  double best_angle = 0, best_area = 1e300;
+  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+    const Vec2 e = hull[(i + 1) % n] - hull[i];
+    if (norm(e) == 0) continue;
+    const double angle = -std::atan2(e.y, e.x);
+    Box2 box;
+    for (Vec2 p : hull)
+      box.add(rotated(p, angle));
+    if (box.width() * box.height() < best_area - 1e-9) {
+      best_area = box.width() * box.height();
+      best_angle = angle;
+    }
+  }
+  return best_angle;
+}
+
+// A part as the hull of its points and the last rotation at which it was seen to fit: most faces that
+// join a part fit at that rotation, which is a cheap test before the full search of fit_in_rect.
+struct Hull {
+  std::vector<Vec2> points;
+  double angle_rad = 0;
+};
+
+class Fitter {
+ public:
+  Fitter(double scale, Vec2 room) : scale_(scale), room_(room) {}
+
+  // Whether `hull` plus `extra` fits; on success `hull` becomes the grown hull.
+  bool grow(Hull& hull, std::span<const Vec2> extra) const {
+    std::vector<Vec2> points = hull.points;
+    points.insert(points.end(), extra.begin(), extra.end());
+    points = convex_hull(std::move(points));
+    if (fits_at(points, hull.angle_rad)) {
+      hull.points = std::move(points);
+      return true;
+    }
+    const RectFit fit = fit_in_rect(points, room_);
+    if (fit.scale < scale_) return false;
+    hull = {std::move(points), fit.angle_rad};
+    return true;
+  }
+
+  bool fits(std::span<const Vec2> points) const { return fit_in_rect(points, room_).scale >= scale_; }
+
+ private:
+  bool fits_at(const std::vector<Vec2>& points, double angle) const {
+    Box2 box;
+    for (Vec2 p : points)
+      box.add(rotated(p, angle));
+    return box.width() * scale_ <= room_.x && box.height() * scale_ <= room_.y;
+  }
+
+  double scale_;
+  Vec2 room_;
+};
+
+// Flat faces of one piece: faces per unit and each unit's flat corner points.
+struct Units {
+  std::vector<int> unit_of_face;  // indexed by face (whole mesh), -1 outside the piece
+  std::vector<std::vector<int>> faces;
+  std::vector<std::vector<Vec2>> points;
+};
+
+Units units_of(const Unfolding& u, const std::vector<int>& flat_face, const std::vector<int>& faces) {
+  Units units;
+  units.unit_of_face.assign(u.num_faces(), -1);
+  std::vector<int> local(u.num_faces(), -1);
+  for (int f : faces) {
+    int& id = local[flat_face[f]];
+    if (id < 0) {
+      id = static_cast<int>(units.faces.size());
+      units.faces.emplace_back();
+      units.points.emplace_back();
+    }
+    units.unit_of_face[f] = id;
+    units.faces[id].push_back(f);
+    units.points[id].insert(units.points[id].end(), u.flat[f].begin(), u.flat[f].end());
+  }
+  for (int f : faces)
+    local[flat_face[f]] = -1;
+  return units;
+}
+
+// Greedy growth leaves small leftovers where a part ran into the room's edge: merges every part into
+// a neighbour (across a fold) whenever the two together still fit, smallest parts first. Renumbers the
+// parts 0..n-1 and returns n.
+int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter& fitter,
+                std::vector<int>& part, int parts) {
+  std::vector<Hull> hull(parts);
+  std::vector<int> size(parts, 0);
+  for (int f : faces) {
+    hull[part[f]].points.insert(hull[part[f]].points.end(), u.flat[f].begin(), u.flat[f].end());
+    size[part[f]] += 1;
+  }
+  for (auto& h : hull)
+    h.points = convex_hull(std::move(h.points));
+  std::vector<int> owner(parts);
+  std::iota(owner.begin(), owner.end(), 0);
+  auto find = [&](int p) {
+    while (owner[p] != p)
+      p = owner[p] = owner[owner[p]];
+    return p;
+  };
+  for (bool merged = true; merged;) {
+    merged = false;
+    std::vector<std::vector<int>> next(parts);
+    for (int f : faces)
+      for (int c = 0; c < 3; ++c) {
+        const UnfoldEdge& edge = u.edges[u.face_edges[f][c]];
+        if (edge.cut || edge.boundary()) continue;
+        const int a = find(part[edge.face[0]]), b = find(part[edge.face[1]]);
+        if (a != b) next[a].push_back(b);
+      }
+    std::vector<int> order;
+    for (int p = 0; p < parts; ++p)
+      if (find(p) == p) order.push_back(p);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] < size[b]; });
+    for (int p : order) {
+      if (find(p) != p) continue;
+      std::vector<int> around;
+      for (int q : next[p])
+        if (find(q) != p) around.push_back(find(q));
+      std::stable_sort(around.begin(), around.end(), [&](int a, int b) { return size[a] < size[b]; });
+      for (int q : around) {
+        Hull both = hull[q];
+        if (!fitter.grow(both, hull[p].points)) continue;
+        owner[p] = q;
+        hull[q] = std::move(both);
+        size[q] += size[p];
+        for (int r : next[p])
+          next[q].push_back(r);
+        merged = true;
+        break;
+      }
+    }
+  }
+  std::vector<int> renumber(parts, -1);
+  int n = 0;
+  for (int f : faces) {
+    const int root = find(part[f]);
+    if (renumber[root] < 0) renumber[root] = n++;
+    part[f] = renumber[root];
+  }
+  return n;
+}
+
+// Grows parts over the folds of one piece, a whole flat face at a time; a flat face that would make its
+// part too large waits for a later part. Round growth starts each part at the unassigned face lying
+// furthest back along the piece's long axis and takes the faces nearest its start first, so parts come
+// out roughly round (round parts nest; strips cut off a spindly net do not). Tree growth takes faces
+// breadth-first along the folds from the first face of the piece, which often needs fewer parts.
+int grow_parts(const Unfolding& u, const std::vector<int>& faces, const Units& units, const Fitter& fitter,
+               bool round, std::vector<int>& part) {
+  std::vector<Vec2> points;
+  for (int f : faces)
+    points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
+  const double axis_angle = min_area_angle(points);
+  Box2 box;
+  for (Vec2 p : points)
+    box.add(rotated(p, axis_angle));
+  const bool x_long = box.width() >= box.height();
+  auto along = [&](int f) {
+    const Vec2 c = rotated(centroid(u.flat[f]), axis_angle);
+    return x_long ? c.x : c.y;
+  };
+  std::vector<int> sweep = faces;
+  if (round) std::stable_sort(sweep.begin(), sweep.end(), [&](int a, int b) { return along(a) < along(b); });
+  long pushed = 0;  // tree growth: faces in the order they were reached
+
+  int parts = 0;
+  for (int seed : sweep) {
+    if (part[seed] >= 0) continue;
+    const int id = parts++;
+    const Vec2 start = centroid(u.flat[seed]);
+    using Entry = std::pair<double, int>;  // distance from the start, face
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> frontier;
+    auto push_neighbours = [&](int unit) {
+      for (int f : units.faces[unit])
+        for (int c = 0; c < 3; ++c) {
+          const UnfoldEdge& edge = u.edges[u.face_edges[f][c]];
+          if (edge.cut || edge.boundary()) continue;
+          const int g = edge.face[0] == f ? edge.face[1] : edge.face[0];
+          if (part[g] < 0) frontier.push({round ? norm(centroid(u.flat[g]) - start) : double(pushed++), g});
+        }
+    };
+    auto take = [&](int unit) {
+      for (int f : units.faces[unit])
+        part[f] = id;
+      push_neighbours(unit);
+    };
+    const int seed_unit = units.unit_of_face[seed];
+    Hull hull{convex_hull(units.points[seed_unit]), 0};
+    take(seed_unit);
+    while (!frontier.empty()) {
+      const int g = frontier.top().second;
+      frontier.pop();
+      const int unit = units.unit_of_face[g];
+      if (part[g] >= 0 || !fitter.grow(hull, units.points[unit])) continue;
+      take(unit);
+    }
+  }
+  return merge_parts(u, faces, fitter, part, parts);
+}
+
+std::string format_size(double mm) {
+  return std::to_string(static_cast<long>(std::floor(mm)));
+}
+
+// A flat face larger than the room can be printed at no size the user asked for: say which size fits.
+void check_flat_faces_fit(const Unfolding& u, const Units& units, const Fitter& fitter,
+                          const PartOptions& o) {
+  for (std::size_t k = 0; k < units.faces.size(); ++k) {
+    if (fitter.fits(units.points[k])) continue;
+    double best = 1e300;
+    for (const auto& pts : units.points)
+      best = std::min(best, fit_in_rect(pts, o.room_mm).scale);
+    throw LayoutError(
+        "a flat face (" + std::to_string(units.faces[k].size()) + " triangles) is larger than the " +
+        format_size(o.room_mm.x) + "x" + format_size(o.room_mm.y) + " mm room for a part at --size " +
+        format_size(o.mm_per_unit * u.model_extent) + "mm; the largest --size that fits is " +
+        format_size(std::min(best * u.model_extent, o.mm_per_unit * u.model_extent * 0.99)) + "mm");
+  }
+}
+
+}  // namespace
+
+std::vector<int> flat_face_of(const Unfolding& u) {
+  std::vector<int> parent(u.num_faces());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const UnfoldEdge& e : u.edges)
+    if (e.inside_face && !e.cut && !e.boundary()) parent[find(e.face[0])] = find(e.face[1]);
+  std::vector<int> id(u.num_faces(), -1), out(u.num_faces());
+  int n = 0;
+  for (int f = 0; f < u.num_faces(); ++f) {
+    const int r = find(f);
+    if (id[r] < 0) id[r] = n++;
+    out[f] = id[r];
+  }
+  return out;
+}
+
+PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOptions& o) {
+  PartsResult result{u, 0, 0};
+  if (!(o.mm_per_unit > 0) || !(u.model_extent > 0)) return result;
+  const Fitter whole(o.mm_per_unit, o.room_mm);
+  const Fitter fitter(o.mm_per_unit, o.room_mm * std::clamp(o.room_fraction, 0.05, 1.0));
+  const std::vector<int> flat_face = flat_face_of(u);
+
+  std::vector<char> cut(u.edges.size(), 0);
+  for (std::size_t e = 0; e < u.edges.size(); ++e)
+    cut[e] = u.edges[e].cut ? 1 : 0;
+  bool changed = false;
+  std::vector<int> part(u.num_faces(), -1);
+  for (const std::vector<int>& faces : u.piece_faces()) {
+    std::vector<Vec2> all;
+    for (int f : faces)
+      all.insert(all.end(), u.flat[f].begin(), u.flat[f].end());
+    if (whole.fits(all)) continue;
+    const Units units = units_of(u, flat_face, faces);
+    check_flat_faces_fit(u, units, whole, o);
+    result.split_pieces += 1;
+    std::vector<int> tree_part = part;
+    const int tree =
+        o.growth == PartGrowth::Round ? 0 : grow_parts(u, faces, units, fitter, false, tree_part);
+    const int round = o.growth == PartGrowth::Tree ? 0 : grow_parts(u, faces, units, fitter, true, part);
+    const bool use_tree = o.growth == PartGrowth::Tree || (o.growth == PartGrowth::Fewest && tree < round);
+    if (use_tree) part = std::move(tree_part);
+    result.new_pieces += use_tree ? tree : round;
+    for (int f : faces)
+      for (int c = 0; c < 3; ++c) {
+        const int e = u.face_edges[f][c];
+        const UnfoldEdge& edge = u.edges[e];
+        if (edge.cut || edge.boundary()) continue;
+        if (part[edge.face[0]] != part[edge.face[1]]) {
+          cut[e] = 1;
+          changed = true;
+        }
+      }
+  }
+  if (changed) {
+    result.unfolding = flatten(mesh, cut);
+    for (std::size_t e = 0; e < u.edges.size(); ++e)
+      result.unfolding.edges[e].inside_face = u.edges[e].inside_face && !result.unfolding.edges[e].cut;
+  }
+  return result;
+}
+
+}  // namespace foldkit::unfold
