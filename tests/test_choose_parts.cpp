@@ -38,7 +38,9 @@ TEST(ChooseParts, SmallerPartsAreKeptWhenTheySaveASheet) {
   EXPECT_LE(chosen.unfolding.piece_count, largest.unfolding.piece_count + 8)
       << "a sheet saved is worth at most 8 more parts";
   for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e)
-    if (ex.unfolding.edges[e].cut) EXPECT_TRUE(chosen.unfolding.edges[e].cut) << "an old cut was glued back";
+    if (ex.unfolding.edges[e].cut) {
+      EXPECT_TRUE(chosen.unfolding.edges[e].cut) << "an old cut was glued back";
+    }
 }
 
 TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {

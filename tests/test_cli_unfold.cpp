@@ -111,3 +111,92 @@ TEST(CliUnfold, EveryTrickyMeshUnfolds) {
     EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.err;
   }
 }
+
+namespace {
+
+// Faces as vertex lists (0-based) of an OBJ file, and its vertices.
+struct Polygons {
+  std::vector<Vec3> v;
+  std::vector<std::vector<int>> f;
+};
+
+Polygons read_polygons(const fs::path& path) {
+  Polygons out;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      Vec3 p;
+      s >> p.x >> p.y >> p.z;
+      out.v.push_back(p);
+    } else if (tag == "f") {
+      std::vector<int> face;
+      for (std::string token; s >> token;)
+        face.push_back(std::stoi(token) - 1);
+      out.f.push_back(face);
+    }
+  }
+  return out;
+}
+
+// Edge lengths around a polygon, starting at its shortest-index rotation that matches `reference`.
+std::vector<double> edge_lengths(const Polygons& p, const std::vector<int>& face) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < face.size(); ++i)
+    out.push_back(norm(p.v[face[(i + 1) % face.size()]] - p.v[face[i]]));
+  return out;
+}
+
+}  // namespace
+
+TEST(CliUnfold, EachInputPolygonIsOnePolygonOfTheNetInTheFileOrder) {
+  const fs::path dir = test::temp_dir("cli_unfold_polygons");
+  for (const char* name : {"barn.obj", "l_block.obj", "football.obj", "cylinder12.obj"})
+    for (const char* size : {"", "150mm"}) {
+      const fs::path mesh_file = test::source_dir() / "tests" / "data" / "lowpoly" / name;
+      std::vector<std::string> args = {"unfold", mesh_file.string(), "-o", (dir / "net.obj").string(), "-q"};
+      if (*size) args.insert(args.end(), {"--size", size});
+      auto run = test::run_foldkit(args);
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      const Polygons in = read_polygons(mesh_file), net = read_polygons(dir / "net.obj");
+      ASSERT_EQ(net.f.size(), in.f.size()) << name;
+      for (std::size_t k = 0; k < in.f.size(); ++k) {
+        ASSERT_EQ(net.f[k].size(), in.f[k].size()) << name << " face " << k;
+        // The same polygon, maybe starting at another corner: its edge lengths are a rotation of the input's.
+        const std::vector<double> a = edge_lengths(in, in.f[k]), b = edge_lengths(net, net.f[k]);
+        bool matched = false;
+        for (std::size_t r = 0; r < a.size() && !matched; ++r) {
+          matched = true;
+          for (std::size_t i = 0; i < a.size(); ++i)
+            matched = matched && std::abs(a[i] - b[(i + r) % b.size()]) < 1e-6 * (1 + a[i]);
+        }
+        EXPECT_TRUE(matched) << name << " face " << k << " is not congruent to the input's";
+      }
+    }
+}
+
+TEST(CliUnfold, WithASizeAndPaperTheNetHasThePartsMakeLaysOut) {
+  const fs::path dir = test::temp_dir("cli_unfold_parts");
+  const fs::path mesh_file = test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj";
+  auto unfold =
+      test::run_foldkit({"unfold", mesh_file.string(), "--size", "150mm", "--paper", "A4", "--json"});
+  auto make = test::run_foldkit({"make", mesh_file.string(), "--size", "150mm", "--paper", "A4", "--json",
+                                 "-o", (dir / "barn.pdf").string()});
+  ASSERT_EQ(unfold.exit_code, 0) << unfold.err;
+  ASSERT_EQ(make.exit_code, 0) << make.err;
+  const auto u = nlohmann::json::parse(unfold.out), m = nlohmann::json::parse(make.out);
+  EXPECT_GT(u["pieces"].get<int>(), 1) << "the barn at 150 mm does not fit A4 in one piece";
+  EXPECT_EQ(u["pieces"], m["pieces"]);
+  EXPECT_EQ(u["seams"], m["seams"]);
+}
+
+TEST(CliUnfold, AFlatFaceLargerThanThePaperIsRefusedWithTheLargestSizeThatFits) {
+  const fs::path mesh_file = test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj";
+  auto run = test::run_foldkit({"make", mesh_file.string(), "--size", "600mm", "-o",
+                                (test::temp_dir("cli_big_face") / "barn.pdf").string(), "-q"});
+  EXPECT_EQ(run.exit_code, 5) << run.err;
+  EXPECT_NE(run.err.find("the largest --size that fits is"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}

@@ -52,7 +52,9 @@ TEST(FlatFaces, EachPlanarPolygonOfALowPolyModelIsOneFlatFace) {
     EXPECT_EQ(flat.non_planar_polygons, 0) << name;
     for (int f = 0; f < mesh.num_faces(); ++f)
       for (int g = 0; g < mesh.num_faces(); ++g)
-        if (mesh.polygon_of(f) == mesh.polygon_of(g)) EXPECT_EQ(flat.face_unit[f], flat.face_unit[g]) << name;
+        if (mesh.polygon_of(f) == mesh.polygon_of(g)) {
+          EXPECT_EQ(flat.face_unit[f], flat.face_unit[g]) << name;
+        }
   }
 }
 

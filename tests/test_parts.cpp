@@ -55,7 +55,9 @@ TEST(Parts, AOnePieceUnfoldingTooLargeForA4IsCutIntoPartsThatFit) {
   EXPECT_TRUE(check_unfolding(ex.mesh, u).empty());
   EXPECT_GT(u.piece_count, ex.unfolding.piece_count);
   for (std::size_t e = 0; e < u.edges.size(); ++e)
-    if (ex.unfolding.edges[e].cut) EXPECT_TRUE(u.edges[e].cut) << "an old cut was glued back";
+    if (ex.unfolding.edges[e].cut) {
+      EXPECT_TRUE(u.edges[e].cut) << "an old cut was glued back";
+    }
   expect_parts_fit(u, p);
 }
 
@@ -100,8 +102,9 @@ TEST(Parts, NoFlatFaceIsSeparatedAndNoneIsCutInside) {
           }
         for (int f = 0; f < ex.mesh.num_faces(); ++f)
           for (int g = 0; g < ex.mesh.num_faces(); ++g)
-            if (ex.mesh.polygon_of(f) == ex.mesh.polygon_of(g))
+            if (ex.mesh.polygon_of(f) == ex.mesh.polygon_of(g)) {
               EXPECT_EQ(u.piece_of_face[f], u.piece_of_face[g]) << name << " at " << size << " mm";
+            }
       }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "foldkit/layout/layout.hpp"
 #include "foldkit/layout/polygon.hpp"
 #include "foldkit/layout/tabs.hpp"
 #include "foldkit/unfold/parts.hpp"
