@@ -47,9 +47,17 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"tab_area_mm2", s.tab_area_mm2}};
 }
 
-// The parts in letter order: each part's letter, sheet (1-based) and faces.
-nlohmann::json parts_json(const unfold::Unfolding& u, const layout::LayoutResult& r) {
-  const std::vector<std::vector<int>> faces = u.piece_faces();
+// The parts in letter order: each part's letter, sheet (1-based) and faces, as 0-based indices of the
+// input file's faces (a polygon is in one part: flat faces are never cut).
+nlohmann::json parts_json(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                          const layout::LayoutResult& r) {
+  std::vector<std::vector<int>> faces = u.piece_faces();
+  for (std::vector<int>& list : faces) {
+    for (int& f : list)
+      f = mesh.polygon_of(f);
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
   std::vector<int> by_letter(faces.size());
   for (std::size_t p = 0; p < by_letter.size(); ++p)
     by_letter[p] = static_cast<int>(p);
@@ -152,7 +160,7 @@ void setup_make(CLI::App& app) {
                        {"layout_seconds", run.layout_seconds},
                        {"outputs", outputs},
                        {"notes", notes},
-                       {"parts", parts_json(u, r)},
+                       {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
                        {"labels_crossing_lines", r.label_audit.crossing_lines},
                        {"labels_touching", r.label_audit.touching},
                        {"labels_turned", r.label_audit.turned},

@@ -178,3 +178,23 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
   }
   EXPECT_FALSE(fs::exists(out)) << "no output file after an error";
 }
+
+TEST(CliMake, NoInputFaceOfALowPolyModelIsSplitAcrossParts) {
+  const fs::path dir = test::temp_dir("make-lowpoly-parts");
+  for (const char* name : {"barn.obj", "drum.obj", "football.obj", "l_block.obj", "rhombicuboctahedron.obj",
+                           "cube.obj", "cylinder12.obj", "dodecahedron.obj"})
+    for (const char* size : {"150mm", "250mm"}) {
+      const fs::path mesh = test::source_dir() / "tests" / "data" / "lowpoly" / name;
+      auto run = test::run_foldkit(
+          {"make", mesh.string(), "--size", size, "-o", (dir / "m.pdf").string(), "--json"});
+      ASSERT_EQ(run.exit_code, 0) << name << " " << size << ": " << run.err;
+      const auto j = nlohmann::json::parse(run.out);
+      std::vector<int> faces;
+      for (const auto& part : j["parts"])
+        for (int f : part["faces"])
+          faces.push_back(f);
+      std::sort(faces.begin(), faces.end());
+      for (std::size_t i = 0; i < faces.size(); ++i)
+        ASSERT_EQ(faces[i], static_cast<int>(i)) << name << " at " << size << ": face in two parts or none";
+    }
+}
