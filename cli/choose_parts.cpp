@@ -57,25 +57,28 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
 
   // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack
   // poorly; smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged
-  // by packing it. A sheet saved is worth up to 8 more parts to glue (measured: the smaller parts
-  // save a sheet for 5 to 20 more parts on spot, bob and penguin at 150-250 mm).
-  auto cost = [](const Candidate& c) {
-    return 8.0 * static_cast<double>(c.sheets) + c.parts.unfolding.piece_count;
+  // by packing it: fewer sheets first, then fewer parts.
+  auto better = [](const Candidate& a, const Candidate& b) {
+    return std::make_pair(a.sheets, a.parts.unfolding.piece_count) <
+           std::make_pair(b.sheets, b.parts.unfolding.piece_count);
   };
-  // Nets with tabs rarely pack above 60% of a sheet; the bound at that density stops the trials where
-  // another sheet saved is unlikely, so a good first layout costs no extra time.
-  constexpr double kReachableDensity = 0.6;
+  // No partition needs fewer sheets than its area: reaching that bound ends the trials.
   const Box2 area = layout::printable_area(o);
-  const long bound = std::max(
-      1L, static_cast<long>(std::ceil(best.used_mm2 / (kReachableDensity * area.width() * area.height()))));
+  const long bound =
+      std::max(1L, static_cast<long>(std::ceil(best.used_mm2 / (area.width() * area.height()) - 1e-9)));
   const std::pair<double, unfold::PartGrowth> tries[] = {
-      {1.0, unfold::PartGrowth::Round}, {0.7, unfold::PartGrowth::Tree}, {0.5, unfold::PartGrowth::Tree}};
+      {1.0, unfold::PartGrowth::Round}, {0.85, unfold::PartGrowth::Tree}, {0.7, unfold::PartGrowth::Tree},
+      {0.7, unfold::PartGrowth::Round}, {0.5, unfold::PartGrowth::Tree},  {0.5, unfold::PartGrowth::Round},
+      {0.35, unfold::PartGrowth::Tree}};
+  // The trials together cost at most this many first trials, so a large mesh stays fast.
+  constexpr int kTrialBudget = 6;
   for (auto [fraction, growth] : tries) {
     if (best.sheets <= bound) break;
+    if (Clock::now() - first_start > kTrialBudget * trial_time) break;
     // Under a time limit, another trial must leave room for the final layout (with labels, dearer).
     if (o.deadline && Clock::now() + 3 * trial_time > *o.deadline) break;
     Candidate c = evaluate(fraction, growth);
-    if (cost(c) < cost(best)) best = std::move(c);
+    if (better(c, best)) best = std::move(c);
   }
   return {std::move(best.parts.unfolding), best.parts.split_pieces, best.parts.new_pieces};
 }

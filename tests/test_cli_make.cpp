@@ -187,6 +187,12 @@ TEST(CliMake, NoInputFaceOfALowPolyModelIsSplitAcrossParts) {
       const fs::path mesh = test::source_dir() / "tests" / "data" / "lowpoly" / name;
       auto run = test::run_foldkit(
           {"make", mesh.string(), "--size", size, "-o", (dir / "m.pdf").string(), "--json"});
+      if (std::string(name) == "drum.obj" && std::string(size) == "250mm") {
+        // Its octagons are 231 mm across: no A4 holds one whole, and none is cut.
+        EXPECT_EQ(run.exit_code, 5) << run.err;
+        EXPECT_NE(run.err.find("the largest --size that fits is"), std::string::npos) << run.err;
+        continue;
+      }
       ASSERT_EQ(run.exit_code, 0) << name << " " << size << ": " << run.err;
       const auto j = nlohmann::json::parse(run.out);
       std::vector<int> faces;
