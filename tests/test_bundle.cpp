@@ -197,3 +197,25 @@ TEST(Bundle, MakeWithoutOutputOrBundleIsAUsageError) {
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("--bundle"), std::string::npos) << run.err;
 }
+
+TEST(Bundle, AHandEditedReadmeNeverMakesItDeleteOtherFiles) {
+  const fs::path dir = test::temp_dir("bundle-edited") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  std::ofstream(dir / "my-notes.txt") << "mine";
+  std::ofstream(dir.parent_path() / "outside.pdf") << "mine";
+  {
+    std::ofstream readme(dir / "README.txt");
+    readme << "FILES\nmy-notes.txt  x\n../outside.pdf  x\nbox-sheet-9.txt  x\n\n";
+  }
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  EXPECT_TRUE(fs::exists(dir / "my-notes.txt"));
+  EXPECT_TRUE(fs::exists(dir.parent_path() / "outside.pdf"));
+}
+
+TEST(Bundle, PaperTooLargeForA300DpiPrintIsRefusedBeforeAnythingIsWritten) {
+  const fs::path dir = test::temp_dir("bundle-huge") / "out";
+  Sheet huge = test::two_piece_sheet();
+  huge.size_mm = {5000, 5000};
+  EXPECT_THROW(devices::write_bundle({huge}, dir, options("box")), OutputError);
+  EXPECT_FALSE(fs::exists(dir));
+}

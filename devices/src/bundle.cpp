@@ -21,6 +21,9 @@ namespace {
 constexpr double kMmPerInch = 25.4;
 constexpr double kPartPadMm = 1.0;  // transparent border around a part so its outline is not clipped
 constexpr const char* kReadmeName = "README.txt";
+// The sheet's print is held twice while its parts are cut out (rendered and decoded): 150 megapixels
+// (A0 at 300 dpi is 139) keeps that near 1.2 GB; larger paper is refused before anything is drawn.
+constexpr double kMaxSheetPixels = 150e6;
 constexpr const char* kFilesHeading = "FILES";
 
 using detail::ContextPtr;
@@ -101,7 +104,8 @@ std::string part_png(const SurfacePtr& sheet_image, const Part& part, double dpi
 }
 
 // File names the README of an earlier bundle in `dir` lists (empty when there is none).
-std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& readme) {
+std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& readme,
+                                                 const std::string& stem_prefix) {
   std::set<std::filesystem::path> names;
   std::ifstream in(readme);
   std::string line;
@@ -114,8 +118,11 @@ std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& re
     if (!in_files) continue;
     if (line.empty()) break;
     const std::string name = line.substr(0, line.find(' '));
-    // Only plain names inside the folder: a README edited to name ../x must not delete anything outside.
-    if (!name.empty() && name.find('/') == std::string::npos && name != ".." && name != ".")
+    // Only files this bundle would write (its own name, a sheet suffix, one of its types): a README
+    // edited by hand must never make us delete a user's file or anything outside the folder.
+    const std::string ext = std::filesystem::path(name).extension().string();
+    if (name.rfind(stem_prefix, 0) == 0 && name.find('/') == std::string::npos &&
+        (ext == ".pdf" || ext == ".png" || ext == ".dxf" || ext == ".svg"))
       names.insert(name);
   }
   return names;
@@ -239,6 +246,15 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
   if (sheets.empty()) throw OutputError(dir.string(), "nothing to write: no sheets");
   if (!(std::isfinite(options.render.png_dpi) && options.render.png_dpi > 0))
     throw OutputError(dir.string(), "PNG resolution must be a positive number of dots per inch");
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    // In doubles: a hostile paper size must not overflow an int before it is refused.
+    const double px_per_mm = options.render.png_dpi / kMmPerInch;
+    const Vec2 size = sheets[i].size_mm;
+    if (!(size.x * px_per_mm * size.y * px_per_mm <= kMaxSheetPixels))
+      throw OutputError(dir.string(), "sheet " + std::to_string(i + 1) + " (" + size_text(sheets[i].size_mm) +
+                                          ") is too large for a " + fixed(options.render.png_dpi, 0) +
+                                          " dpi print in a bundle (at most A0)");
+  }
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
     if (std::filesystem::exists(dir, ec)) throw OutputError(dir.string(), "exists and is not a folder");
@@ -246,7 +262,8 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
       throw OutputError(dir.string(), "cannot create the folder: " + ec.message());
   }
   const std::vector<BundleFile> listing = bundle_files(sheets, options);
-  const std::set<std::filesystem::path> earlier = listed_in_readme(dir / kReadmeName);
+  const std::set<std::filesystem::path> earlier =
+      listed_in_readme(dir / kReadmeName, options.name + "-sheet-");
 
   std::vector<AtomicFile> files;
   files.reserve(listing.size());
