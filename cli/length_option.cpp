@@ -17,8 +17,11 @@ CLI::Validator length_in(LengthRange range) {
   const std::string bounds = format_length_mm(range.min_mm) + " and " + format_length_mm(range.max_mm);
   return CLI::Validator(
       [range, bounds](std::string& text) -> std::string {
-        const auto mm = layout::parse_non_negative_length_mm(text);
+        // A negative length is a length out of range, not an unreadable one.
+        const bool negative = !text.empty() && text[0] == '-';
+        const auto mm = layout::parse_non_negative_length_mm(negative ? text.substr(1) : text);
         if (!mm) return "'" + text.substr(0, 40) + "': expected a length such as 5mm, 0.5cm or 0.2in";
+        if (negative && *mm > 0) return "'" + text.substr(0, 40) + "': must be between " + bounds;
         if (*mm < range.min_mm || *mm > range.max_mm)
           return "'" + text.substr(0, 40) + "': must be between " + bounds;
         char exact[32];

@@ -31,9 +31,10 @@ double largest_dimension(const unfold::Mesh& mesh) {
 
 }  // namespace
 
+// Rounded as the renderer rounds (render_cairo.cpp).
 void check_png_raster(Vec2 paper_mm, double dpi) {
-  const double width = std::ceil(paper_mm.x / kMmPerInch * dpi),
-               height = std::ceil(paper_mm.y / kMmPerInch * dpi);
+  const double width = std::round(paper_mm.x / kMmPerInch * dpi),
+               height = std::round(paper_mm.y / kMmPerInch * dpi);
   if (width * height <= kMaxPngPixels) return;
   const double largest_dpi = std::floor(std::sqrt(kMaxPngPixels / (paper_mm.x * paper_mm.y)) * kMmPerInch);
   char text[256];

@@ -501,8 +501,10 @@ TEST_F(MeshIo, PlyWithoutFacesIsAnInputError) {
 TEST_F(MeshIo, NonFiniteCoordinatesInOffAndPlyNameTheVertex) {
   std::vector<Vec3> v = kOctaVertices;
   v[2].y = NAN;
-  EXPECT_EQ(problem_of(write(dir, "n.off", off(v, kOctaFaces))), "vertex 3 has a non-finite coordinate");
-  EXPECT_EQ(problem_of(write(dir, "n.ply", ply(v, kOctaFaces))), "vertex 3 has a non-finite coordinate");
+  EXPECT_EQ(problem_of(write(dir, "n.off", off(v, kOctaFaces))),
+            "vertex 3 has a non-finite coordinate (line 5)");
+  EXPECT_EQ(problem_of(write(dir, "n.ply", ply(v, kOctaFaces))),
+            "vertex 3 has a non-finite coordinate (line 12)");
 }
 
 TEST_F(MeshIo, OffWithFewerVertexLinesThanDeclaredIsTruncated) {
@@ -545,7 +547,7 @@ const std::vector<std::pair<std::string, std::string>> kHostileMeshes{
 
 }  // namespace
 
-TEST(MeshIo, EveryHostileMeshIsRefusedWithItsMessage) {
+TEST(HostileMeshes, AreEachRefusedWithTheirMessage) {
   for (const auto& [file, message] : kHostileMeshes) {
     const fs::path path = kHostile / file;
     ASSERT_TRUE(fs::is_regular_file(path)) << path << " is missing";
@@ -559,7 +561,7 @@ TEST(MeshIo, EveryHostileMeshIsRefusedWithItsMessage) {
   }
 }
 
-TEST(MeshIo, EveryHostileMeshFileHasAnExpectedMessage) {
+TEST(HostileMeshes, EveryFileInTheFolderHasAnExpectedMessage) {
   int meshes = 0;
   for (const auto& entry : fs::directory_iterator(kHostile)) {
     if (entry.path().extension() == ".toml") continue;  // profiles: test_profile.cpp
@@ -572,7 +574,7 @@ TEST(MeshIo, EveryHostileMeshFileHasAnExpectedMessage) {
   EXPECT_EQ(meshes, static_cast<int>(kHostileMeshes.size()));
 }
 
-TEST(MeshIo, ManyInwardClosedComponentsAreAllTurnedOutward) {
+TEST(MeshRepair, ManyInwardClosedComponentsAreAllTurnedOutward) {
   // 20,000 inverted tetrahedra: turning them was quadratic (a pass over all faces per component; 50,000
   // took 81 s). Each must come out with positive volume.
   constexpr int kTetrahedra = 20'000;

@@ -466,11 +466,11 @@ void check_ply_header(const std::string& text, const std::string& name, int face
         if (!detail::ply_integer_type(w[2]) || !detail::ply_integer_type(w[3]))
           throw InputError(name, "PLY face list with a non-integer count or index type" + where);
         face_list = true;
-        face_layout.push_back({w[3], w[2]});
+        face_layout.push_back({w[3], w[2], w[4]});
       } else if (w.size() == 3 && is_type(w[1])) {
         if (element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++xyz;
         if (element == "vertex") ++vertex_properties;
-        (element == "vertex" ? vertex_layout : face_layout).push_back({w[1], ""});
+        (element == "vertex" ? vertex_layout : face_layout).push_back({w[1], "", w[2]});
       } else {
         throw InputError(name, "unparsable PLY property line" + where);
       }
@@ -492,7 +492,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   } else {
     const std::size_t body = end + std::string("end_header").size() + (text[after] == '\r' ? 2 : 1);
     detail::check_binary_ply_body(std::string_view(text).substr(body), format == "binary_big_endian",
-                                  vertex_layout, nv, face_layout, nf, name);
+                                  vertex_layout, nv, face_layout, nf, kMaxCoordinate, name);
   }
 }
 

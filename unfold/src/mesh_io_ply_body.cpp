@@ -1,7 +1,9 @@
 #include "mesh_io_ply_body.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "foldkit/error.hpp"
 
@@ -27,6 +29,44 @@ std::int64_t read_integer(const char* at, const std::string& type, bool big_endi
   return static_cast<std::int64_t>(u);
 }
 
+// A float or double of the given type at `at`, the caller has checked that the bytes are there.
+double read_real(const char* at, const std::string& type, bool big_endian) {
+  const int bytes = ply_type_bytes(type);
+  unsigned char raw[8] = {};
+  std::memcpy(raw, at, static_cast<std::size_t>(bytes));
+  if (big_endian) std::reverse(raw, raw + bytes);  // every platform we build for is little-endian
+  if (bytes == 4) {
+    float f = 0;
+    std::memcpy(&f, raw, 4);
+    return f;
+  }
+  double d = 0;
+  std::memcpy(&d, raw, 8);
+  return d;
+}
+
+// OpenMesh narrows every coordinate to float: a double beyond float range becomes infinite there (or,
+// converted by other code, undefined), so it is refused here with the vertex named.
+void check_coordinates(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
+                       std::uint64_t vertices, std::uint64_t vertex_bytes, double max_coordinate,
+                       const std::string& name) {
+  std::vector<std::pair<std::uint64_t, std::string>> xyz;  // offset in the record, type
+  std::uint64_t offset = 0;
+  for (const PlyProperty& p : vertex) {
+    if ((p.name == "x" || p.name == "y" || p.name == "z") && !ply_integer_type(p.type))
+      xyz.push_back({offset, p.type});
+    offset += static_cast<std::uint64_t>(ply_type_bytes(p.type));
+  }
+  for (std::uint64_t v = 0; v < vertices; ++v)
+    for (const auto& [at, type] : xyz) {
+      const double x = read_real(body.data() + v * vertex_bytes + at, type, big_endian);
+      if (!std::isfinite(x))
+        throw InputError(name, "vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
+      if (std::fabs(x) > max_coordinate)
+        throw InputError(name, "vertex " + std::to_string(v + 1) + ": coordinate out of range");
+    }
+}
+
 }  // namespace
 
 bool ply_integer_type(const std::string& type) {
@@ -46,7 +86,7 @@ int ply_type_bytes(const std::string& type) {
 
 void check_binary_ply_body(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
                            std::uint64_t vertices, const std::vector<PlyProperty>& face, std::uint64_t faces,
-                           const std::string& name) {
+                           double max_coordinate, const std::string& name) {
   std::uint64_t vertex_bytes = 0;
   for (const PlyProperty& p : vertex)
     vertex_bytes += static_cast<std::uint64_t>(ply_type_bytes(p.type));
@@ -55,6 +95,7 @@ void check_binary_ply_body(std::string_view body, bool big_endian, const std::ve
     throw InputError(name, "truncated file: the header declares " + std::to_string(vertices) +
                                " vertices of " + std::to_string(vertex_bytes) + " bytes, the body has " +
                                std::to_string(size) + " bytes");
+  check_coordinates(body, big_endian, vertex, vertices, vertex_bytes, max_coordinate, name);
   std::uint64_t at = vertices * vertex_bytes;
   const auto truncated = [&](std::uint64_t f) {
     return InputError(name, "truncated file: face " + std::to_string(f + 1) + " of " + std::to_string(faces) +

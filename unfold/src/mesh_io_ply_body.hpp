@@ -13,6 +13,7 @@ namespace foldkit::unfold::detail {
 struct PlyProperty {
   std::string type;        ///< scalar type, or the index type of a list
   std::string count_type;  ///< the list's count type; empty for a scalar
+  std::string name;        ///< "x", "vertex_indices", …
 };
 
 /// Byte size of a PLY scalar type name ("uchar", "float32", …); 0 for an unknown name.
@@ -21,11 +22,12 @@ int ply_type_bytes(const std::string& type);
 /// True for the integer types, the only ones a list count or a vertex index may have.
 bool ply_integer_type(const std::string& type);
 
-/// Walks the binary body (the bytes after the end_header line): `vertices` records of `vertex`, then
-/// `faces` records of `face` whose list holds 3 or more indices below `vertices`. Throws InputError(name,
-/// …) naming the first face that is malformed or runs past the end of the file.
+/// Walks the binary body (the bytes after the end_header line): `vertices` records of `vertex` whose x,
+/// y and z are finite and within `max_coordinate`, then `faces` records of `face` whose list holds 3 or
+/// more indices below `vertices`. Throws InputError(name, …) naming the first vertex or face that is
+/// malformed or runs past the end of the file.
 void check_binary_ply_body(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
                            std::uint64_t vertices, const std::vector<PlyProperty>& face, std::uint64_t faces,
-                           const std::string& name);
+                           double max_coordinate, const std::string& name);
 
 }  // namespace foldkit::unfold::detail
