@@ -51,7 +51,7 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
 void setup_make(CLI::App& app) {
   auto args = std::make_shared<MakeArgs>();
   CLI::App* cmd = app.add_subcommand("make", "Unfold a mesh and lay it out on sheets: PDF, SVG or PNG");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", args->output,
                   "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet)")
       ->required()
