@@ -33,6 +33,7 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
   add_length_option(cmd, "--regmark-square", o.regmark_square_mm, "Side of the square mark", kRegMarkSquare);
   add_length_option(cmd, "--regmark-arm", o.regmark_arm_mm, "Arm length of the L marks", kRegMarkArm);
   add_length_option(cmd, "--spacing", o.spacing_mm, "Least gap between pieces", kSpacing);
+  add_length_option(cmd, "--label-min", o.label_min_mm, "Smallest cap height of edge numbers", kLabelMin);
 }
 
 layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
@@ -55,6 +56,7 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
   out.regmark.square_mm = o.regmark_square_mm;
   out.regmark.arm_mm = o.regmark_arm_mm;
   out.spacing_mm = o.spacing_mm;
+  out.label_min_mm = o.label_min_mm;
   return out;
 }
 

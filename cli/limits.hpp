@@ -21,6 +21,8 @@ inline constexpr LengthRange kRegMarkInset{0, 100};
 inline constexpr LengthRange kRegMarkSquare{1, 50};
 inline constexpr LengthRange kRegMarkArm{1, 100};
 inline constexpr LengthRange kOvercut{0, 10};
+/// Edge numbers: smaller is unreadable, larger than the layout's largest label (3.5 mm).
+inline constexpr LengthRange kLabelMin{0.5, 3.5};
 
 /// A PNG sheet holds at most this many pixels (4 bytes each while it is drawn).
 inline constexpr double kMaxPngPixels = 150e6;
