@@ -100,7 +100,7 @@ std::string part_png(const SurfacePtr& sheet_image, const Part& part, double dpi
   std::ostringstream out;
   if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS || !detail::encode_png(surface.get(), out))
     throw OutputError(file, "cannot render the part");
-  return out.str();
+  return detail::with_resolution(out.str(), dpi);
 }
 
 // File names the README of an earlier bundle in `dir` lists (empty when there is none).
@@ -282,7 +282,7 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
     if (!detail::write_png(png, s, options.render, error))
       throw OutputError((dir / (stem + ".png")).string(), error);
     const std::string png_bytes = png.str();
-    open(stem + ".png") << png_bytes;
+    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
     open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
     detail::write_svg(open(stem + ".svg"), s, options.render, cap_ratio);
 
