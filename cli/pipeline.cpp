@@ -6,6 +6,7 @@
 
 #include "choose_parts.hpp"
 #include "foldkit/error.hpp"
+#include "limits.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -40,7 +41,9 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   bounded.deadline = deadline;
 
   PipelineRun run;
-  run.unfolded = load_and_unfold(mesh_file, unfold_share, line);
+  run.unfolded = load_and_unfold(mesh_file, unfold_share, line, [&](const unfold::LoadedMesh& loaded) {
+    check_sheet_budget(loaded.mesh, layout_options);
+  });
   line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
   const auto start = std::chrono::steady_clock::now();
   try {
