@@ -16,7 +16,6 @@
 #include "foldkit/layout/label_text.hpp"
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/layout/polygon.hpp"
-#include "foldkit/layout/split.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "layout_fixtures.hpp"
 
@@ -374,7 +373,7 @@ TEST(Layout, NoLabelIsTurnedBeyondAQuarterTurnAndEveryAmbiguousNumberIsMarked) {
 
 TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
   const auto& ex = test::unfolded_example("spot_350.obj");
-  const SplitResult split = split_to_fit(ex.mesh, ex.unfolding, at_size(150));
+  const unfold::PartsResult split = test::split_to_fit(ex.mesh, ex.unfolding, at_size(150));
   ASSERT_GT(split.unfolding.piece_count, 2);
   const LayoutResult r = layout_sheets(split.unfolding, at_size(150));
   ASSERT_GT(r.sheets.size(), 1u) << "the test wants mates on other sheets";

@@ -3,7 +3,6 @@
 
 #include "foldkit/layout/hints.hpp"
 #include "foldkit/layout/piece_letters.hpp"
-#include "foldkit/layout/split.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -23,7 +22,7 @@ TEST(PieceLetters, EveryPartGetsOneLetterInsideItClearOfItsOutline) {
   const auto& ex = test::unfolded_example("spot_350.obj");
   LayoutOptions o;
   o.size_mm = 150;
-  const SplitResult split = split_to_fit(ex.mesh, ex.unfolding, o);
+  const unfold::PartsResult split = test::split_to_fit(ex.mesh, ex.unfolding, o);
   const auto pieces = scaled_pieces(split.unfolding, 150 / split.unfolding.model_extent);
   ASSERT_GT(pieces.size(), 1u);
   std::vector<std::vector<FoldLine>> folds;

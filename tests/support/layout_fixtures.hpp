@@ -8,7 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "foldkit/layout/layout.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/parts.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "test_paths.hpp"
 
@@ -36,6 +38,16 @@ inline const UnfoldedExample& unfolded_example(const std::string& name,
     it = cache.emplace(key, std::move(ex)).first;
   }
   return it->second;
+}
+
+/// The parts the pipeline would start from: `unfolding` cut to fit the room of `options` (a --size is
+/// needed) as large as the sheet allows.
+inline unfold::PartsResult split_to_fit(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding,
+                                        const layout::LayoutOptions& options) {
+  unfold::PartOptions parts;
+  parts.room_mm = layout::piece_room_mm(options);
+  parts.mm_per_unit = *options.size_mm / unfolding.model_extent;
+  return unfold::split_into_parts(mesh, unfolding, parts);
 }
 
 /// A regular tetrahedron with unit edges, unfolded by flatten() with the three edges at vertex 0 cut:
