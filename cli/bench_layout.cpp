@@ -49,7 +49,7 @@ Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout
   const auto start = std::chrono::steady_clock::now();
   try {
     const ChosenParts parts = choose_parts(mesh, unfolding, o);
-    const layout::LayoutResult r = layout::layout_sheets(parts.unfolding, o);
+    const layout::LayoutResult r = parts.layout ? *parts.layout : layout::layout_sheets(parts.unfolding, o);
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;

@@ -1,8 +1,10 @@
 #pragma once
 // The stage above unfold and layout that picks the parts: when the model does not fit the sheet as
 // it unfolded, the unfolding is cut into parts that fit the printable room (unfold::split_into_parts),
-// a few candidate partitions are laid out without labels, and the one with the fewest sheets (then
-// fewest parts) is laid out in full. Neither unfold nor layout sees the other's result flow back.
+// a few candidate partitions are laid out, and the one with the fewest sheets (then fewest parts) is
+// kept with its layout. Neither unfold nor layout sees the other's result flow back.
+#include <optional>
+
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/unfolding.hpp"
@@ -13,6 +15,8 @@ struct ChosenParts {
   unfold::Unfolding unfolding;  ///< the parts (the input unfolding when nothing had to be split)
   int split_pieces = 0;         ///< pieces that were too large for the sheet
   int new_pieces = 0;           ///< parts they were cut into
+  /// The layout of `unfolding` with the options given, when the choice needed one (a split was tried).
+  std::optional<layout::LayoutResult> layout;
 };
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or

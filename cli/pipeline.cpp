@@ -17,8 +17,9 @@ constexpr double kUnfoldShareOfTimeLimit = 0.75;
 
 }  // namespace
 
-void choose_and_note_parts(const unfold::Mesh& mesh, unfold::UnfoldResult& result,
-                           const layout::LayoutOptions& layout_options) {
+std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& mesh,
+                                                          unfold::UnfoldResult& result,
+                                                          const layout::LayoutOptions& layout_options) {
   // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
   // that do, and say so, rather than refuse.
   ChosenParts parts = choose_parts(mesh, result.unfolding, layout_options);
@@ -27,6 +28,7 @@ void choose_and_note_parts(const unfold::Mesh& mesh, unfold::UnfoldResult& resul
         std::to_string(parts.split_pieces) + " piece(s) larger than the paper at this size cut into " +
         std::to_string(parts.new_pieces) + " parts that fit (--fit or --no-split keeps them whole)");
   result.unfolding = std::move(parts.unfolding);
+  return std::move(parts.layout);
 }
 
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
@@ -47,8 +49,9 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
   const auto start = std::chrono::steady_clock::now();
   try {
-    choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, bounded);
-    run.layout = layout::layout_sheets(run.unfolded.result.unfolding, bounded);
+    auto laid_out = choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, bounded);
+    run.layout =
+        laid_out ? std::move(*laid_out) : layout::layout_sheets(run.unfolded.result.unfolding, bounded);
   } catch (const LayoutError& e) {
     if (std::chrono::steady_clock::now() <= deadline) throw;
     char limit[32];

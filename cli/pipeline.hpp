@@ -1,5 +1,6 @@
 #pragma once
 // load -> unfold -> lay out: the part `foldkit make` and `foldkit cut` share.
+#include <optional>
 #include <string>
 
 #include "foldkit/layout/layout.hpp"
@@ -16,8 +17,10 @@ struct PipelineRun {
 
 /// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
 /// any split in result.notes. What `make` lays out and `unfold --size` writes.
-void choose_and_note_parts(const unfold::Mesh& mesh, unfold::UnfoldResult& result,
-                           const layout::LayoutOptions& layout_options);
+/// Returns the layout of those parts when the choice made one.
+std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& mesh,
+                                                          unfold::UnfoldResult& result,
+                                                          const layout::LayoutOptions& layout_options);
 
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
 /// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
