@@ -13,6 +13,7 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
+#include "limits.hpp"
 #include "pipeline.hpp"
 
 namespace foldkit::cli {
@@ -109,6 +110,10 @@ void setup_make(CLI::App& app) {
   cmd->callback([args] {
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    std::string ext = std::filesystem::path(args->output).extension().string();
+    for (char& c : ext)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const layout::LayoutResult& r = run.layout;
