@@ -197,13 +197,15 @@ void setup_cut(CLI::App& app) {
     layout::RegMarkOptions& marks = layout_options.regmark;
     devices::RegMarkSetup& device_marks = device.regmarks;
     for (auto [option, printed, profiled] :
-         {std::tuple{"--regmark-square", &marks.square_mm, &device_marks.square_mm},
-          std::tuple{"--regmark-arm", &marks.arm_mm, &device_marks.arm_length_mm},
+         {std::tuple{"--regmark-arm", &marks.arm_mm, &device_marks.arm_length_mm},
           std::tuple{"--regmark-inset", &marks.inset_mm, &device_marks.inset_mm}})
       if (cmd->count(option) > 0)
         *profiled = *printed;
       else
         *printed = *profiled;
+    // The square is the sensor's, not a setting: another size is printed as asked and then refused by
+    // the planner, before anything is sent.
+    if (cmd->count("--regmark-square") == 0) marks.square_mm = device_marks.square_mm;
     marks.stroke_mm = device_marks.stroke_mm;
     ProgressLine line(!args->quiet && !args->json);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);

@@ -236,6 +236,21 @@ TEST(CliSim, ReportsHowFarAFaultyRunGot) {
   EXPECT_NE(r.err.find("strokes were done, partial picture in p.svg"), std::string::npos) << r.err;
 }
 
+TEST(CliCut, TellsTheDeviceTheMarksThatWerePrintedAndRefusesSquaresItCannotFind) {
+  const fs::path dir = foldkit::test::temp_dir("cli-regmark-geometry");
+  ASSERT_EQ(run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "--regmark-arm", "15mm",
+                              "-o", "job.gpgl", "-q"})
+                .exit_code,
+            0);
+  EXPECT_NE(slurp(dir / "job.gpgl").find("TB51,300\x03"), std::string::npos);
+  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "--regmark-square",
+                                     "7mm", "-o", "bad.gpgl", "-q"});
+  EXPECT_EQ(r.exit_code, 6) << r.err;
+  EXPECT_NE(r.err.find("finds only 5.00 mm registration squares; the sheet's is 7.00 mm"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "bad.gpgl"));
+}
+
 }  // namespace
 
 TEST(CliCut, TheRegistrationMarksPrintedAreTheOnesTheDeviceIsToldToFind) {
