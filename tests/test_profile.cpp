@@ -183,9 +183,6 @@ TEST(Profile, MediaSettingsBecomeClampedDeviceSteps) {
   EXPECT_EQ(force_step(d, 1000), 33);
 }
 
-}  // namespace
-}  // namespace foldkit::devices
-
 TEST(Profile, RegistrationMarkLengthsAreBoundedLikeTheirOptions) {
   // 1e300 used to reach the device as TB51,-9223372036854775808, and --dry-run passed it (issue 10).
   const fs::path hostile = test::source_dir() / "tests" / "data" / "hostile";
@@ -205,3 +202,6 @@ TEST(Profile, RegistrationMarkLengthsAreBoundedLikeTheirOptions) {
             std::string::npos)
       << load_error(inset);
 }
+
+}  // namespace
+}  // namespace foldkit::devices
