@@ -33,16 +33,12 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--lambda-m", o.unfold.lambda_m, "GA fitness weight of the sheet margin")->group(group);
   cmd.add_option("--lambda-b", o.unfold.lambda_b, "GA fitness weight of matching-edge distance")
       ->group(group);
-<<<<<<< HEAD
   cmd.add_option(
          "--flat-angle", o.flat_angle_deg,
          "Degrees within which a polygon, or a run of triangles, counts as one flat face that is never "
          "cut (default 0.5)")
       ->check(CLI::Range(0.0, 30.0))
       ->group(group);
-  cmd.add_option("--cut", o.cut_file, "File of edges (vertex index pairs) that must be cut")->group(group);
-  cmd.add_option("--keep", o.keep_file, "File of edges (vertex index pairs) that must stay folded")
-=======
   cmd.add_option("--cut", o.cut_file,
                  "File of edges that must be cut: pairs of vertex numbers as the mesh file writes them")
       ->group(group);
@@ -52,7 +48,6 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
                  "Number of the first vertex in --cut/--keep lists (default: the mesh format's own, OBJ 1, "
                  "OFF and PLY 0)")
       ->check(CLI::Range(0, 1))
->>>>>>> main
       ->group(group);
 }
 
@@ -60,12 +55,7 @@ void finish_unfold_options(UnfoldCliOptions& o) {
   static const std::map<std::string, unfold::Method> methods = {
       {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
   if (auto it = methods.find(o.method); it != methods.end()) o.unfold.method = it->second;
-<<<<<<< HEAD
   o.unfold.flat_angle_rad = o.flat_angle_deg * 3.14159265358979323846 / 180.0;
-  if (!o.cut_file.empty()) o.unfold.seams.force_cut = unfold::read_edge_list(o.cut_file);
-  if (!o.keep_file.empty()) o.unfold.seams.forbid_cut = unfold::read_edge_list(o.keep_file);
-=======
->>>>>>> main
 }
 
 namespace {

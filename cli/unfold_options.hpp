@@ -18,12 +18,9 @@ struct UnfoldCliOptions {
   unfold::UnfoldOptions unfold;
   std::string method = "default";
   std::string cut_file, keep_file;
-<<<<<<< HEAD
   double flat_angle_deg = 0.5;  ///< --flat-angle
-=======
   /// The number of the first vertex in --cut/--keep lists; nullopt: the mesh format's own (OBJ 1, OFF/PLY 0).
   std::optional<int> index_base;
->>>>>>> main
 };
 
 /// Adds --max-faces, --method, --seed, --time-limit, --threads, --population, --lambda-p/-l/-m/-b,

@@ -112,7 +112,6 @@ TEST(CliUnfold, EveryTrickyMeshUnfolds) {
   }
 }
 
-<<<<<<< HEAD
 namespace {
 
 // Faces as vertex lists (0-based) of an OBJ file, and its vertices.
@@ -200,7 +199,8 @@ TEST(CliUnfold, AFlatFaceLargerThanThePaperIsRefusedWithTheLargestSizeThatFits) 
   EXPECT_EQ(run.exit_code, 5) << run.err;
   EXPECT_NE(run.err.find("the largest --size that fits is"), std::string::npos) << run.err;
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-=======
+}
+
 TEST(CliUnfold, SeamListsUseTheFilesOwnVertexNumbers) {
   const fs::path dir = test::temp_dir("cli-seams");
   const std::string mesh = test::example_mesh("bob_128.obj").string();
@@ -220,9 +220,9 @@ TEST(CliUnfold, SeamListsUseTheFilesOwnVertexNumbers) {
   run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net2.obj").string(), "--cut",
                            (dir / "cut.txt").string(), "--index-base", "0", "-q"});
   EXPECT_EQ(run.exit_code, 3) << run.err;
-  EXPECT_NE(run.err.find("cut.txt: line 1: " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of"),
-            std::string::npos)
+  EXPECT_NE(
+      run.err.find("cut.txt: line 1: " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of"),
+      std::string::npos)
       << run.err;
   EXPECT_FALSE(fs::exists(dir / "net2.obj"));
->>>>>>> main
 }
