@@ -1,4 +1,5 @@
 // `foldkit make MESH -o model.pdf|svg|png`: load -> unfold -> lay out -> render, the main job.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -7,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
@@ -25,6 +27,7 @@ struct MakeArgs {
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
+  ColourCliOptions colour;
 };
 
 // Dash patterns (mm on, off, …) by name.
@@ -73,18 +76,23 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_layout_options(*cmd, args->layout);
+  add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
     ProgressLine line(!args->quiet);
-    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    PipelineRun run =
+        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const layout::LayoutResult& r = run.layout;
 
     devices::RenderOptions render;
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
+    const bool coloured =
+        std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
+    apply_colour_render_options(args->colour, coloured, render);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     const auto files = devices::render_sheets(r.sheets, args->output, render);
     line.clear();

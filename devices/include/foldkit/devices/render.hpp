@@ -22,6 +22,9 @@ struct RoleStyle {
   Rgb fill{1, 1, 1};            ///< fill colour when fill_closed
 };
 
+/// How fold lines are drawn: on coloured sheets they are best light or absent (a cutter scores them).
+enum class FoldLines { Normal, Light, None };
+
 struct RenderOptions {
   double png_dpi = 150;                    ///< resolution of PNG previews
   std::string font_family = "sans-serif";  ///< fontconfig family for texts (embedded in PDF)
@@ -32,6 +35,10 @@ struct RenderOptions {
   RoleStyle label{{0, 0, 0}, 0.2, {}};
   RoleStyle hint{{0.1, 0.45, 0.15}, 0.2, {}};
   RoleStyle regmark{{0, 0, 0}, 0.5, {}};  ///< 0.5 mm: the stroke Silhouette's optical sensor expects
+  FoldLines fold_lines = FoldLines::Normal;
+  /// Textures are embedded at most this fine (texels per inch of paper): a 1024 x 1024 texture on a
+  /// small model need not cost tens of megabytes.
+  double image_dpi = 300;
 
   /// The style of `role`.
   const RoleStyle& style(PathRole role) const;
