@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "foldkit/layout/split.hpp"
+#include "limits.hpp"
 
 namespace foldkit::cli {
 
@@ -12,9 +13,11 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
                                const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
                                const std::optional<layout::FillOptions>& fills) {
   PipelineRun run;
-  run.unfolded = load_and_unfold(mesh_file, unfold_options, line);
-  const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
   layout::LayoutOptions layout_options = asked_layout_options;
+  run.unfolded = load_and_unfold(mesh_file, unfold_options, line, [&](const unfold::LoadedMesh& loaded) {
+    check_sheet_budget(loaded.mesh, layout_options);
+  });
+  const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
   // Bleed needs its share of the spacing between pieces.
   if (coloured)
     layout_options.spacing_mm = std::max(layout_options.spacing_mm, layout::fill_spacing_mm(*fills));
