@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/bundle.hpp"
 #include "foldkit/devices/dxf.hpp"
@@ -31,6 +32,7 @@ struct MakeArgs {
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
+  ColourCliOptions colour;
 };
 
 // Dash patterns (mm on, off, …) by name.
@@ -157,6 +159,7 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_layout_options(*cmd, args->layout);
+  add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     if (args->output.empty() && args->bundle.empty())
@@ -168,13 +171,17 @@ void setup_make(CLI::App& app) {
       c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
-    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    PipelineRun run =
+        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const layout::LayoutResult& r = run.layout;
 
     devices::RenderOptions render;
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
+    const bool coloured =
+        std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
+    apply_colour_render_options(args->colour, coloured, render);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     std::vector<std::filesystem::path> files;
     if (!args->output.empty()) files = write_sheets(r.sheets, args->output, render);

@@ -1,5 +1,6 @@
 #include "pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <utility>
@@ -32,26 +33,31 @@ std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& me
 }
 
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
-                               const layout::LayoutOptions& layout_options, ProgressLine& line) {
+                               const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
+                               const std::optional<layout::FillOptions>& fills) {
   const double limit_s = unfold_options.unfold.time_limit_s;
   const auto deadline =
       std::chrono::steady_clock::now() +
       std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limit_s));
   UnfoldCliOptions unfold_share = unfold_options;
   unfold_share.unfold.time_limit_s = kUnfoldShareOfTimeLimit * limit_s;
-  layout::LayoutOptions bounded = layout_options;
-  bounded.deadline = deadline;
+  layout::LayoutOptions layout_options = asked_layout_options;
+  layout_options.deadline = deadline;
 
   PipelineRun run;
   run.unfolded = load_and_unfold(mesh_file, unfold_share, line, [&](const unfold::LoadedMesh& loaded) {
     check_sheet_budget(loaded.mesh, layout_options);
   });
+  const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
+  // Bleed needs its share of the spacing between pieces.
+  if (coloured)
+    layout_options.spacing_mm = std::max(layout_options.spacing_mm, layout::fill_spacing_mm(*fills));
   line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
   const auto start = std::chrono::steady_clock::now();
   try {
-    auto laid_out = choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, bounded);
-    run.layout =
-        laid_out ? std::move(*laid_out) : layout::layout_sheets(run.unfolded.result.unfolding, bounded);
+    auto laid_out = choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, layout_options);
+    run.layout = laid_out ? std::move(*laid_out)
+                          : layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
   } catch (const LayoutError& e) {
     if (std::chrono::steady_clock::now() <= deadline) throw;
     char limit[32];
@@ -59,6 +65,8 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
     throw LayoutError(mesh_file + ": " + e.what() + " (--time-limit " + limit +
                       " s bounds the whole command: give more time, a smaller --size or --max-faces)");
   }
+  if (coloured)
+    layout::add_fills(run.layout, run.unfolded.loaded.mesh, run.unfolded.result.unfolding, *fills);
   run.layout_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "foldkit/layout/fills.hpp"
 #include "foldkit/layout/layout.hpp"
 #include "progress.hpp"
 #include "unfold_options.hpp"
@@ -26,6 +27,7 @@ std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& me
 /// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
 /// Throws InputError (mesh), LayoutError (does not fit) or Error.
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
-                               const layout::LayoutOptions& layout_options, ProgressLine& line);
+                               const layout::LayoutOptions& layout_options, ProgressLine& line,
+                               const std::optional<layout::FillOptions>& fills = std::nullopt);
 
 }  // namespace foldkit::cli
