@@ -14,10 +14,10 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/layout/fills.hpp"
 #include "foldkit/layout/layout.hpp"
-#include "foldkit/layout/split.hpp"
 #include "foldkit/unfold/decimate.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
+#include "layout_fixtures.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -78,9 +78,8 @@ Printed print(unfold::Mesh mesh, double size_mm, double dpi, const layout::FillO
   lo.size_mm = size_mm;
   lo.numbers = false;
   lo.spacing_mm = layout::fill_spacing_mm(fill);
-  layout::SplitLayout split = layout::split_and_layout(out.mesh, out.unfolding, lo);
-  if (split.split.split_pieces > 0) out.unfolding = std::move(split.split.unfolding);
-  out.layout = std::move(split.layout);
+  out.unfolding = test::split_to_fit(out.mesh, out.unfolding, lo).unfolding;
+  out.layout = layout::layout_sheets(out.unfolding, lo);
   layout::add_fills(out.layout, out.mesh, out.unfolding, fill);
   devices::RenderOptions ro;
   ro.png_dpi = dpi;
