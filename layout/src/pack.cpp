@@ -297,11 +297,11 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
     result.placements.resize(items.size());
     std::vector<SheetGrid> sheets;
     int last_lowest = ny;
-    for (int index : order) {
+    for (std::size_t placed = 0; placed < order.size(); ++placed) {
+      const int index = order[placed];
       if (options.deadline && std::chrono::steady_clock::now() > *options.deadline)
-        throw LayoutError(
-            "stopped at the time limit while packing: " + std::to_string(&index - order.data()) + " of " +
-            std::to_string(order.size()) + " pieces placed");
+        throw LayoutError("stopped at the time limit while packing: " + std::to_string(placed) + " of " +
+                          std::to_string(order.size()) + " pieces placed");
       Spot spot;
       int sheet = 0;
       for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
