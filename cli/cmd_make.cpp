@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -108,7 +109,8 @@ void setup_make(CLI::App& app) {
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     finish_unfold_options(args->unfold);
-    const layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
     ProgressLine line(!args->quiet);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const layout::LayoutResult& r = run.layout;

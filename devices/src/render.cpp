@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "foldkit/devices/atomic_file.hpp"
@@ -75,9 +76,14 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
   if (ext == ".pdf") {
     AtomicFile file(path);
     std::string error;
-    if (!detail::write_pdf(file.stream(), sheets, options, path.stem().string(), error)) {
+    // Drawn into memory first: the scaling preference is appended once Cairo has finished the file.
+    std::ostringstream bytes;
+    if (!detail::write_pdf(bytes, sheets, options, path.stem().string(), error)) {
       throw OutputError(path.string(), error);
     }
+    std::string pdf = std::move(bytes).str();
+    detail::ask_viewers_not_to_scale(pdf);
+    file.stream().write(pdf.data(), static_cast<std::streamsize>(pdf.size()));
     file.commit();
     return {path};
   }

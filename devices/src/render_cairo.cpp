@@ -111,12 +111,41 @@ double measure_cap_ratio(cairo_t* cr, const std::string& family) {
   return ratio > 0.3 && ratio < 1.2 ? ratio : 0.72;
 }
 
+// The legend of line styles in the box layout kept for it: each row a sample and its name.
+void draw_legend(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  if (sheet.legend_mm.empty()) return;
+  cairo_select_font_face(cr, options.font_family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLegendText_mm / cap_ratio);
+  for (std::size_t i = 0; i < kLegend.size(); ++i) {
+    const LegendRow& row = kLegend[i];
+    const RoleStyle& style = options.style(row.role);
+    const double y = sheet.legend_mm.min.y + kLegendRow_mm * (static_cast<double>(i) + 0.5);
+    const double x = sheet.legend_mm.min.x;
+    cairo_new_path(cr);
+    if (row.box) {
+      cairo_rectangle(cr, x, y - 1.5, kLegendSample_mm, 3);
+      set_source(cr, style.fill);
+      cairo_fill_preserve(cr);
+    } else {
+      cairo_move_to(cr, x, y);
+      cairo_line_to(cr, x + kLegendSample_mm, y);
+    }
+    apply_line_style(cr, style);
+    set_source(cr, style.stroke);
+    cairo_stroke(cr);
+    set_source(cr, options.sheet.stroke);
+    cairo_move_to(cr, x + kLegendSample_mm + 1.5, y + 0.5 * kLegendText_mm);
+    cairo_show_text(cr, row.name);
+  }
+}
+
 void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   for (PathRole role : kPaintOrder)
     draw_paths(cr, sheet, options, role);
   draw_texts(cr, sheet, options, cap_ratio);
+  draw_legend(cr, sheet, options, cap_ratio);
 }
 
 }  // namespace

@@ -66,6 +66,9 @@ struct Sheet {
   Box2 printable_mm;  ///< area inside the margins; everything but registration marks lies inside it
   std::vector<Path> paths;
   std::vector<Text> texts;
+  /// Where the renderer draws a small legend of its line styles (cut, mountain, valley, tab); empty
+  /// for none. Layout keeps the box free; only the renderer knows the styles.
+  Box2 legend_mm;
 };
 
 }  // namespace foldkit
