@@ -181,8 +181,9 @@ TEST(Layout, EverythingButRegistrationMarksLiesInsideThePrintableArea) {
               << name << ": " << role_name(p.role) << " at " << v.x << "," << v.y;
       }
       for (const Text& t : sheet.texts)
-        if (t.role != PathRole::Sheet)
+        if (t.role != PathRole::Sheet) {
           ASSERT_TRUE(inside(sheet.printable_mm, t.at_mm)) << name << ": text " << t.text;
+        }
     }
   }
 }
