@@ -15,6 +15,7 @@
 #include "foldkit/devices/dxf.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
+#include "foldkit/layout/guide.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "pipeline.hpp"
@@ -29,6 +30,7 @@ struct MakeArgs {
   double dpi = 150;
   bool json = false;
   bool quiet = false;
+  bool no_guide = false;
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
@@ -149,6 +151,8 @@ void setup_make(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+  cmd->add_flag("--no-guide", args->no_guide,
+                "No assembly guide (a last PDF page, or NAME-guide.svg/.png beside SVG and PNG sheets)");
   add_layout_options(*cmd, args->layout);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
@@ -171,7 +175,35 @@ void setup_make(CLI::App& app) {
     render.valley.dash_mm = fold_styles().at(args->valley);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     std::vector<std::filesystem::path> files;
-    if (!args->output.empty()) files = write_sheets(r.sheets, args->output, render);
+    int guide_pages = 0;
+    if (!args->output.empty()) {
+      const bool pdf = ext == ".pdf", picture = ext == ".svg" || ext == ".png";
+      if (!args->no_guide && (pdf || picture)) {
+        line.update("drawing the assembly guide");
+        layout::GuideOptions guide_options;
+        guide_options.paper_mm = layout_options.paper_mm;
+        guide_options.margin_mm = layout_options.margin_mm;
+        guide_options.model_name = layout_options.model_name;
+        const Sheet guide =
+            layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
+        guide_pages = 1;
+        if (pdf) {
+          // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
+          std::vector<Sheet> pages = r.sheets;
+          pages.push_back(guide);
+          files = write_sheets(pages, args->output, render);
+        } else {
+          files = write_sheets(r.sheets, args->output, render);
+          std::filesystem::path guide_path = args->output;
+          guide_path.replace_filename(guide_path.stem().string() + "-guide" +
+                                      guide_path.extension().string());
+          const auto written = devices::render_sheets({guide}, guide_path, render);
+          files.insert(files.end(), written.begin(), written.end());
+        }
+      } else {
+        files = write_sheets(r.sheets, args->output, render);
+      }
+    }
     if (!args->bundle.empty()) {
       line.update("writing the bundle");
       const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm);
@@ -212,6 +244,7 @@ void setup_make(CLI::App& app) {
                        {"notes", notes},
                        {"parts", parts_json(u, r)},
                        {"labels_crossing_lines", r.label_audit.crossing_lines},
+                       {"guide_pages", guide_pages},
                        {"labels_touching", r.label_audit.touching},
                        {"labels_turned", r.label_audit.turned},
                        {"letters_crossing_lines", r.label_audit.letters_crossing_lines},

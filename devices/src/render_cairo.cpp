@@ -69,6 +69,13 @@ void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, P
   for (const Path& path : sheet.paths) {
     if (path.role != role || path.points_mm.empty()) continue;
     trace(cr, path);
+    if (path.filled && path.tint >= 0) {
+      // Guide views: the outline in the fill colour closes hairline gaps between neighbouring faces.
+      set_source(cr, shaded_fill(path));
+      cairo_fill_preserve(cr);
+      cairo_stroke(cr);
+      continue;
+    }
     if (path.filled) {
       set_source(cr, style.stroke);
       cairo_fill_preserve(cr);

@@ -46,6 +46,14 @@ inline constexpr std::array<LegendRow, 4> kLegend = {{{PathRole::Cut, "cut", fal
 /// Row pitch and sample length of the legend (mm), and its text's cap height.
 inline constexpr double kLegendRow_mm = 5.5, kLegendSample_mm = 8, kLegendText_mm = 2.2;
 
+/// The colour of a filled, tinted path (the guide's part colours): the tint lightened, times its shade.
+inline Rgb shaded_fill(const Path& path) {
+  constexpr double kLighten = 0.35;
+  const Rgb t = tint_colour(path.tint);
+  auto mix = [&](double c) { return (c + kLighten * (1 - c)) * path.shade; };
+  return {mix(t.r), mix(t.g), mix(t.b)};
+}
+
 /// Cap height of `family` as a fraction of its font size (DejaVu Sans: about 0.73), measured with Cairo
 /// so that PDF, PNG and SVG texts come out the same size.
 double cap_height_ratio(const std::string& family);

@@ -91,6 +91,11 @@ void write_path(std::ostream& out, const Path& path, const RoleStyle& style) {
   }
   if (path.closed) out << " Z";
   out << "\"";
+  if (path.filled && path.tint >= 0) {
+    const std::string fill = colour(shaded_fill(path));
+    out << " stroke=\"" << fill << "\" fill=\"" << fill << "\"/>\n";
+    return;
+  }
   if (path.tint >= 0) out << " stroke=\"" << colour(tint_colour(path.tint)) << "\"";
   if (path.filled) {
     out << " fill=\"" << colour(style.stroke) << "\"";

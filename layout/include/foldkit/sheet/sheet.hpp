@@ -47,6 +47,9 @@ struct Path {
   /// Paths that must be told apart within a role (the direction arrows of seam pairs) carry an index
   /// into the renderer's palette of distinguishable colours; -1 draws the role's own colour.
   int tint = -1;
+  /// A filled path with a tint is filled (and outlined) in the tint lightened for text to read on it,
+  /// times this: the lighting of the assembly guide's views. 1 for everything else.
+  double shade = 1;
 };
 
 /// A text on the sheet. `at_mm` is the left end of the baseline; the text runs along `angle_rad`
