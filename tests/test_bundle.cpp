@@ -109,6 +109,17 @@ TEST(Bundle, HoldsExactlyTheFilesItsReadmeLists) {
   EXPECT_EQ(listed.size(), 2 * 6 + 1u);
 }
 
+TEST(Bundle, PartFilesAreNamedByTheLetterPrintedOnThePart) {
+  const fs::path dir = test::temp_dir("bundle-letters") / "out";
+  Sheet s = test::two_piece_sheet();
+  s.texts.push_back({"B", {30, 30}, 6, 0, PathRole::Piece, 0});
+  s.texts.push_back({"../x", {80, 30}, 6, 0, PathRole::Piece, 1});  // not a file name: the number stays
+  devices::write_bundle({s}, dir, options("box"));
+  EXPECT_TRUE(fs::exists(dir / "box-sheet-1-part-B.png"));
+  EXPECT_TRUE(fs::exists(dir / "box-sheet-1-part-2.png"));
+  EXPECT_NE(slurp(dir / "README.txt").find("part B for Print Then Cut"), std::string::npos);
+}
+
 TEST(Bundle, SheetPngsAre300DpiAndPartPngsHaveAnAlphaChannel) {
   const fs::path dir = test::temp_dir("bundle-png") / "out";
   const Sheet s = test::two_piece_sheet();
