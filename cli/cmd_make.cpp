@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/bundle.hpp"
 #include "foldkit/devices/dxf.hpp"
@@ -34,6 +35,7 @@ struct MakeArgs {
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
+  ColourCliOptions colour;
 };
 
 // Dash patterns (mm on, off, …) by name.
@@ -154,6 +156,7 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--no-guide", args->no_guide,
                 "No assembly guide (a last PDF page, or NAME-guide.svg/.png beside SVG and PNG sheets)");
   add_layout_options(*cmd, args->layout);
+  add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     if (args->output.empty() && args->bundle.empty())
@@ -166,13 +169,17 @@ void setup_make(CLI::App& app) {
       c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
-    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    PipelineRun run =
+        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const layout::LayoutResult& r = run.layout;
 
     devices::RenderOptions render;
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
+    const bool coloured =
+        std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
+    apply_colour_render_options(args->colour, coloured, render);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     std::vector<std::filesystem::path> files;
     int guide_pages = 0;

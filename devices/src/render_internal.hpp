@@ -2,6 +2,7 @@
 // Shared between the renderers: drawing order, number formatting and the text metrics that make
 // `Text::height_mm` a cap height in every format.
 #include <array>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -53,6 +54,10 @@ inline Rgb shaded_fill(const Path& path) {
   auto mix = [&](double c) { return (c + kLighten * (1 - c)) * path.shade; };
   return {mix(t.r), mix(t.g), mix(t.b)};
 }
+
+/// The style `role` is drawn in on `sheet`: fold lines lightened or hidden as options.fold_lines says,
+/// tabs unfilled on coloured sheets (their fills are the sheet's). nullopt: the role is not drawn.
+std::optional<RoleStyle> sheet_style(const RenderOptions& options, const Sheet& sheet, PathRole role);
 
 /// Cap height of `family` as a fraction of its font size (DejaVu Sans: about 0.73), measured with Cairo
 /// so that PDF, PNG and SVG texts come out the same size.
