@@ -1,5 +1,7 @@
 // `foldkit make MESH -o model.pdf|svg|png`: load -> unfold -> lay out -> render, the main job.
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -8,9 +10,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
+#include "output_paths.hpp"
 #include "pipeline.hpp"
 
 namespace foldkit::cli {
@@ -19,6 +23,7 @@ namespace {
 struct MakeArgs {
   std::string mesh;
   std::string output;
+  std::string format;
   double dpi = 150;
   bool json = false;
   bool quiet = false;
@@ -45,6 +50,28 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"tab_area_mm2", s.tab_area_mm2}};
 }
 
+// The format named by --format, else by the output's extension ("-": PDF). Throws a usage error.
+std::string output_format(const std::string& output, const std::string& format) {
+  if (!format.empty()) return format;
+  if (output == "-") return "pdf";
+  std::string ext = std::filesystem::path(output).extension().string();
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".pdf" || ext == ".svg" || ext == ".png") return ext.substr(1);
+  throw Error("-o " + output + ": output must end in .pdf, .svg or .png (or give --format)", ExitCode::Usage);
+}
+
+// Sheets an earlier, longer run left under the same name would be taken for part of this one.
+std::string remove_stale_files(const std::string& output, std::size_t sheet_count) {
+  if (devices::resolve_output(output).kind != devices::OutputKind::File) return "";
+  const auto removed = devices::remove_stale_sheet_files(output, sheet_count);
+  if (removed.empty()) return "";
+  std::string note = "removed " + std::to_string(removed.size()) +
+                     " sheet file(s) of an earlier run: " + removed.front().string();
+  if (removed.size() > 1) note += " ... " + removed.back().string();
+  return note;
+}
+
 }  // namespace
 
 void setup_make(CLI::App& app) {
@@ -52,14 +79,12 @@ void setup_make(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("make", "Unfold a mesh and lay it out on sheets: PDF, SVG or PNG");
   cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
   cmd->add_option("-o,--output", args->output,
-                  "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet)")
-      ->required()
-      ->check([](const std::string& path) -> std::string {
-        std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-        for (char& c : ext)
-          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return ext == ".pdf" || ext == ".svg" || ext == ".png" ? "" : "output must end in .pdf, .svg or .png";
-      });
+                  "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet); - for "
+                  "standard output")
+      ->required();
+  cmd->add_option("--format", args->format,
+                  "Output format when -o has no such extension (default for -: pdf)")
+      ->check(CLI::IsMember({"pdf", "svg", "png"}));
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
       ->check(CLI::Range(10.0, 2400.0))
       ->capture_default_str();
@@ -75,24 +100,38 @@ void setup_make(CLI::App& app) {
   add_layout_options(*cmd, args->layout);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
+    const std::string format = output_format(args->output, args->format);
+    const bool to_stdout = args->output == "-";
+    if (to_stdout && args->json)
+      throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
+    const std::vector<std::filesystem::path> inputs{args->mesh, args->unfold.cut_file,
+                                                    args->unfold.keep_file};
+    refuse_output_over_inputs("-o", args->output, inputs);
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
     ProgressLine line(!args->quiet);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const layout::LayoutResult& r = run.layout;
 
+    if (format != "pdf") {
+      for (std::size_t i = 1; i < r.sheets.size(); ++i)
+        refuse_output_over_inputs("-o", sheet_output_path(args->output, i), inputs);
+    }
     devices::RenderOptions render;
+    render.format = format;
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     const auto files = devices::render_sheets(r.sheets, args->output, render);
     line.clear();
+    const std::string stale = format == "pdf" ? "" : remove_stale_files(args->output, files.size());
 
     const unfold::Unfolding& u = run.unfolded.result.unfolding;
     std::vector<std::string> notes = run.unfolded.loaded.notes;
     notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
     notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+    if (!stale.empty()) notes.push_back(stale);
     if (args->json) {
       nlohmann::json sheets = nlohmann::json::array();
       for (const layout::SheetStats& s : r.sheet_stats)
@@ -125,7 +164,9 @@ void setup_make(CLI::App& app) {
     }
     for (const auto& n : notes)
       std::cerr << "note: " << n << "\n";
-    std::printf(
+    // With -o - the sheets are on standard output: the summary must not be mixed into them.
+    std::fprintf(
+        to_stdout ? stderr : stdout,
         "%s: %d faces -> %d piece%s (%s) -> %zu sheet%s at %.0f mm, coverage %.0f%%, %d tabs (%d dropped) -> "
         "%s%s\n",
         args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",
