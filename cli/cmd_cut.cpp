@@ -131,7 +131,7 @@ void setup_cut(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "cut",
       "Unfold a mesh, lay it out and send it to a cutting plotter (or a file, or the simulated device)");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("--device", args->device, "Device profile id (see `foldkit profiles`); none: simulated");
   cmd->add_option("--media", args->media, "Media profile id (see `foldkit profiles`)")->capture_default_str();
   cmd->add_option("--mat", args->mat, "Mat id of the device (default: its first)");

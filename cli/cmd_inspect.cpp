@@ -1,4 +1,6 @@
 // `foldkit inspect MESH [--json] [--max-faces N]`: what the loader made of a mesh file, before unfolding.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -14,6 +16,45 @@
 
 namespace foldkit::cli {
 namespace {
+
+// What a builder needs to know before printing in colour: which materials, which images were found,
+// and how much of the surface has texture coordinates.
+struct ColourReport {
+  int faces_with_uv = 0;
+  double uv_area_fraction = 0;  ///< surface area of the faces with coordinates over the whole area
+  int textures_found = 0, textures_missing = 0;
+};
+
+ColourReport colour_report(const unfold::Mesh& m) {
+  ColourReport r;
+  double with = 0, total = 0;
+  for (int f = 0; f < m.num_faces(); ++f) {
+    const double a = unfold::face_area(m, f);
+    total += a;
+    const int mat = m.face_material.empty() ? -1 : m.face_material[f];
+    const bool textured = !m.face_uv.empty() && mat >= 0 && !m.materials[mat].texture.empty();
+    if (!m.face_uv.empty()) r.faces_with_uv += 1;
+    if (textured) with += a;
+  }
+  r.uv_area_fraction = total > 0 ? with / total : 0;
+  for (const auto& mat : m.materials)
+    if (!mat.texture.empty()) (mat.texture_found ? r.textures_found : r.textures_missing) += 1;
+  return r;
+}
+
+std::string hex(Colour c) {
+  auto byte = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return buf;
+}
+
+std::vector<int> faces_per_material(const unfold::Mesh& m) {
+  std::vector<int> count(m.materials.size(), 0);
+  for (int mat : m.face_material)
+    if (mat >= 0) count[mat] += 1;
+  return count;
+}
 
 struct InspectArgs {
   std::string mesh;
@@ -51,6 +92,25 @@ nlohmann::json to_json(const unfold::LoadedMesh& loaded, const unfold::MeshStats
                      {"genus", c.genus},
                      {"closed", c.closed}});
   j["per_component"] = comps;
+  const ColourReport colour = colour_report(loaded.mesh);
+  nlohmann::json materials = nlohmann::json::array();
+  const std::vector<int> used = faces_per_material(loaded.mesh);
+  for (std::size_t i = 0; i < loaded.mesh.materials.size(); ++i) {
+    const auto& mat = loaded.mesh.materials[i];
+    nlohmann::json jm{{"name", mat.name}, {"colour", hex(mat.colour)}, {"faces", used[i]}};
+    if (!mat.texture.empty()) {
+      jm["texture"] = mat.texture;
+      jm["texture_found"] = mat.texture_found;
+      jm["texture_embedded"] = !mat.texture_data.empty();
+      if (mat.texture_found) jm["texture_size_px"] = {mat.texture_width_px, mat.texture_height_px};
+    }
+    materials.push_back(jm);
+  }
+  j["materials"] = materials;
+  j["faces_with_texture_coordinates"] = colour.faces_with_uv;
+  j["textured_area_fraction"] = colour.uv_area_fraction;
+  j["textures_found"] = colour.textures_found;
+  j["textures_missing"] = colour.textures_missing;
   j["notes"] = loaded.notes;
   return j;
 }
@@ -87,6 +147,28 @@ std::string table(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) 
   std::snprintf(box, sizeof box, "(%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)", s.bbox_min.x, s.bbox_min.y,
                 s.bbox_min.z, s.bbox_max.x, s.bbox_max.y, s.bbox_max.z);
   row("bounding box", box);
+  const unfold::Mesh& m = loaded.mesh;
+  const std::vector<int> used = faces_per_material(m);
+  for (std::size_t i = 0; i < m.materials.size(); ++i) {
+    const auto& mat = m.materials[i];
+    std::string value = "'" + mat.name + "' " + hex(mat.colour) + ", " + std::to_string(used[i]) + " faces";
+    if (!mat.texture.empty()) {
+      value += ", texture " + mat.texture;
+      value += mat.texture_found ? " (" + std::to_string(mat.texture_width_px) + "x" +
+                                       std::to_string(mat.texture_height_px) + ")"
+                                 : " (MISSING: prints in the colour)";
+    }
+    row(i == 0 ? "materials" : "", value);
+  }
+  if (!m.materials.empty() || !m.face_uv.empty()) {
+    const ColourReport colour = colour_report(m);
+    char coverage[128];
+    std::snprintf(coverage, sizeof coverage, "%d of %d faces, %.0f%% of the area textured",
+                  colour.faces_with_uv, m.num_faces(), 100 * colour.uv_area_fraction);
+    row("texture coords", coverage);
+    row("textures", std::to_string(colour.textures_found) + " found, " +
+                        std::to_string(colour.textures_missing) + " missing");
+  }
   for (const auto& note : loaded.notes)
     out << "  note: " << note << "\n";
   return out.str();
@@ -97,7 +179,7 @@ std::string table(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) 
 void setup_inspect(CLI::App& app) {
   auto args = std::make_shared<InspectArgs>();
   CLI::App* cmd = app.add_subcommand("inspect", "Load a mesh and report its topology and curvature");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->add_option("--max-faces", args->max_faces, "Decimate to at most N faces first")
       ->check(CLI::PositiveNumber);

@@ -1,5 +1,7 @@
 // `foldkit make MESH -o model.pdf|svg|png`: load -> unfold -> lay out -> render, the main job.
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -72,12 +74,42 @@ std::string remove_stale_files(const std::string& output, std::size_t sheet_coun
   return note;
 }
 
+// The parts in letter order: each part's letter, sheet (1-based) and faces.
+nlohmann::json parts_json(const unfold::Unfolding& u, const layout::LayoutResult& r) {
+  const std::vector<std::vector<int>> faces = u.piece_faces();
+  std::vector<int> by_letter(faces.size());
+  for (std::size_t p = 0; p < by_letter.size(); ++p)
+    by_letter[p] = static_cast<int>(p);
+  std::sort(by_letter.begin(), by_letter.end(), [&](int a, int b) {
+    const std::string& la = r.piece_letters[a];
+    const std::string& lb = r.piece_letters[b];
+    return la.size() != lb.size() ? la.size() < lb.size() : la < lb;
+  });
+  nlohmann::json parts = nlohmann::json::array();
+  for (int p : by_letter)
+    parts.push_back({{"id", r.piece_letters[p]}, {"sheet", r.placements[p].sheet + 1}, {"faces", faces[p]}});
+  return parts;
+}
+
+// One line when the faces are too small for clear labels, with the remedy computed for this model.
+std::string label_remedy(const layout::LayoutResult& r, int faces) {
+  if (!(r.label_room_factor > 1)) return "";
+  const double f = r.label_room_factor;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "%d of %d edge numbers find no spot clear of lines and labels at %.0f mm (faces too small): "
+                "use --size %.0fmm, or --max-faces %d at this size",
+                r.labels_without_room, r.overall.labels, r.size_mm, std::ceil(r.size_mm * f / 10) * 10,
+                std::max(4, static_cast<int>(faces / (f * f))));
+  return line;
+}
+
 }  // namespace
 
 void setup_make(CLI::App& app) {
   auto args = std::make_shared<MakeArgs>();
   CLI::App* cmd = app.add_subcommand("make", "Unfold a mesh and lay it out on sheets: PDF, SVG or PNG");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", args->output,
                   "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet); - for "
                   "standard output")
@@ -131,6 +163,7 @@ void setup_make(CLI::App& app) {
     std::vector<std::string> notes = run.unfolded.loaded.notes;
     notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
     notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+    if (const std::string remedy = label_remedy(r, u.num_faces()); !remedy.empty()) notes.push_back(remedy);
     if (!stale.empty()) notes.push_back(stale);
     if (args->json) {
       nlohmann::json sheets = nlohmann::json::array();
@@ -157,7 +190,14 @@ void setup_make(CLI::App& app) {
                        {"unfold_seconds", run.unfolded.result.seconds},
                        {"layout_seconds", run.layout_seconds},
                        {"outputs", outputs},
-                       {"notes", notes}};
+                       {"notes", notes},
+                       {"parts", parts_json(u, r)},
+                       {"labels_crossing_lines", r.label_audit.crossing_lines},
+                       {"labels_touching", r.label_audit.touching},
+                       {"labels_turned", r.label_audit.turned},
+                       {"letters_crossing_lines", r.label_audit.letters_crossing_lines},
+                       {"labels_without_room", r.labels_without_room},
+                       {"dropped_tab_seams", r.dropped_tab_seams}};
       if (!r.assembly.empty()) j["assembly"] = assembly;
       std::cout << j.dump(2) << "\n";
       return;

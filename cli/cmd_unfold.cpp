@@ -72,7 +72,7 @@ void write_net_obj(std::ostream& out, const unfold::Mesh& mesh, const unfold::Un
 void setup_unfold(CLI::App& app) {
   auto args = std::make_shared<UnfoldArgs>();
   CLI::App* cmd = app.add_subcommand("unfold", "Unfold a mesh and write the flat net as OBJ");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply)")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", args->output,
                   "Flat net to write (.obj, or - for standard output); face k is face k of the input");
   cmd->add_flag("--json", args->json, "Print a JSON summary on stdout");

@@ -43,6 +43,9 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
   cmd.add_option("--spacing", o.spacing_mm, "Least gap between pieces, mm")
       ->check(CLI::Range(0.0, 50.0))
       ->capture_default_str();
+  cmd.add_option("--label-min", o.label_min_mm, "Smallest cap height of edge numbers, mm")
+      ->check(CLI::Range(0.5, 3.5))
+      ->capture_default_str();
 }
 
 layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
@@ -65,6 +68,7 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
   out.regmark.square_mm = o.regmark_square_mm;
   out.regmark.arm_mm = o.regmark_arm_mm;
   out.spacing_mm = o.spacing_mm;
+  out.label_min_mm = o.label_min_mm;
   return out;
 }
 

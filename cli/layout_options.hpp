@@ -26,6 +26,7 @@ struct LayoutCliOptions {
   double regmark_square_mm = 5;
   double regmark_arm_mm = 20;
   double spacing_mm = 2;
+  double label_min_mm = 2;
 };
 
 /// Adds --size, --fit, --paper, --landscape, --margin, --tab-width, --no-tabs, --no-numbers, --arrows,

@@ -2,6 +2,7 @@
 // asked resolution, SVG layers by role, the --json report, and one-line errors for bad requests.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +89,35 @@ TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {
   EXPECT_EQ(j["assembly"].size(), j["seams"].get<std::size_t>());
 }
 
+TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
+  const fs::path dir = test::temp_dir("make-json-parts");
+  auto run = test::run_foldkit({"make", test::example_mesh("spot_350.obj").string(), "--size", "150mm", "-o",
+                                (dir / "spot.pdf").string(), "--json", "--hints"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  ASSERT_EQ(j["parts"].size(), j["pieces"].get<std::size_t>());
+  std::vector<int> faces;
+  char letter = 'A';
+  for (const auto& part : j["parts"]) {
+    EXPECT_EQ(part["id"].get<std::string>(), std::string(1, letter++)) << "parts in letter order";
+    EXPECT_GE(part["sheet"].get<int>(), 1);
+    EXPECT_LE(part["sheet"].get<int>(), j["sheet_count"].get<int>());
+    for (int f : part["faces"])
+      faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end());
+  ASSERT_EQ(static_cast<int>(faces.size()), j["faces"].get<int>()) << "every face in exactly one part";
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    ASSERT_EQ(faces[i], static_cast<int>(i));
+  for (const char* key : {"labels_crossing_lines", "labels_touching", "labels_turned"})
+    EXPECT_GE(j[key].get<int>(), 0) << key;
+  EXPECT_EQ(j["labels_turned"].get<int>(), 0);
+  // Notes are single lines; seam lists go to JSON fields.
+  for (const auto& note : j["notes"])
+    EXPECT_LT(note.get<std::string>().size(), 300u) << note;
+  EXPECT_EQ(j["dropped_tab_seams"].size(), j["overall"]["dropped_tabs"].get<std::size_t>());
+}
+
 TEST(CliMake, PngPreviewsHaveThePixelSizeOfTheDpi) {
   const fs::path dir = test::temp_dir("make-png");
   const fs::path png = dir / "fish.png";
@@ -115,7 +145,7 @@ TEST(CliMake, SvgHasOneLayerPerRole) {
                                 svg.string(), "--regmarks", "--arrows", "--hints", "-q"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string text = slurp(svg);
-  for (const char* id : {"cut", "mountain", "valley", "tab", "label", "hint", "regmark"})
+  for (const char* id : {"cut", "mountain", "valley", "tab", "label", "hint", "regmark", "piece", "sheet"})
     EXPECT_NE(text.find(std::string("id=\"") + id + "\""), std::string::npos) << id;
   EXPECT_NE(text.find("width=\"210mm\""), std::string::npos);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "foldkit/layout/edge_numbers.hpp"
+#include "foldkit/layout/label_text.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -36,7 +37,7 @@ TEST(EdgeNumbers, BothSidesOfEverySeamAreLabelledLegiblyAndLabelsDoNotOverlap) {
     std::vector<int> sides(seams.size(), 0);
     int on_tabs = 0, crowded = 0;
     for (const Label& l : labels) {
-      EXPECT_EQ(l.text, std::to_string(numbers[l.seam]));
+      EXPECT_EQ(l.text, number_text(numbers[l.seam]));
       EXPECT_GE(l.height_mm, o.min_mm - 1e-9);
       EXPECT_LE(l.height_mm, o.max_mm + 1e-9);
       sides[l.seam] |= 1 << l.side;

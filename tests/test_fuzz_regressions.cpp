@@ -42,9 +42,9 @@ std::string slurp(const fs::path& p) {
 }  // namespace
 
 TEST(FuzzRegressions, EveryRegressionFolderNamesAFuzzTarget) {
-  const std::vector<std::string> targets = {"fuzz_load_obj",       "fuzz_load_off",      "fuzz_load_stl",
-                                            "fuzz_load_ply",       "fuzz_device_gpgl",   "fuzz_device_hpgl",
-                                            "fuzz_device_profile", "fuzz_device_streams"};
+  const std::vector<std::string> targets = {
+      "fuzz_load_obj", "fuzz_load_off",    "fuzz_load_stl",    "fuzz_load_ply",       "fuzz_load_gltf",
+      "fuzz_load_glb", "fuzz_device_gpgl", "fuzz_device_hpgl", "fuzz_device_profile", "fuzz_device_streams"};
   for (const auto& e : fs::directory_iterator(regressions())) {
     if (!e.is_directory()) continue;
     EXPECT_NE(std::find(targets.begin(), targets.end(), e.path().filename().string()), targets.end())
@@ -54,7 +54,7 @@ TEST(FuzzRegressions, EveryRegressionFolderNamesAFuzzTarget) {
 
 TEST(FuzzRegressions, MeshInputsEndInAnInputErrorOrLoad) {
   int replayed = 0;
-  for (const std::string ext : {"obj", "off", "stl", "ply"}) {
+  for (const std::string ext : {"obj", "off", "stl", "ply", "gltf", "glb"}) {
     for (const auto& input : inputs_of("fuzz_load_" + ext)) {
       const fs::path dir = foldkit::test::temp_dir("fuzz_regression");
       const fs::path copy = dir / ("input." + ext);  // load_mesh dispatches on the extension

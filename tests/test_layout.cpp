@@ -12,8 +12,11 @@
 #include <regex>
 
 #include "foldkit/error.hpp"
+#include "foldkit/layout/edge_numbers.hpp"
+#include "foldkit/layout/label_text.hpp"
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/layout/polygon.hpp"
+#include "foldkit/layout/split.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "layout_fixtures.hpp"
 
@@ -110,7 +113,7 @@ TEST(Layout, EverySeamCarriesItsNumberOnBothSidesAndNumbersAreUnique) {
     std::map<int, int> count;
     for (const Sheet& sheet : r.sheets)
       for (const Text& t : sheet.texts)
-        if (t.role == PathRole::Label) count[std::stoi(t.text)] += 1;
+        if (t.role == PathRole::Label) count[seam_number_in(t.text)] += 1;
     const int seams = ex.unfolding.seam_count();
     ASSERT_EQ(static_cast<int>(count.size()), seams) << name;
     for (int n = 1; n <= seams; ++n)
@@ -145,12 +148,16 @@ TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
     for (const Text& t : r.sheets[s].texts) {
       if (t.role != PathRole::Label) continue;
       double nearest = 1e300;
-      for (const auto& [sheet, ends] : copies[std::stoi(t.text)]) {
+      // The middle of the label's box (page frame, y down: glyphs grow towards (sin, -cos)).
+      const Vec2 along{std::cos(t.angle_rad), std::sin(t.angle_rad)}, up{along.y, -along.x};
+      const Vec2 centre = t.at_mm + along * (0.5 * label_width_mm(t.text, t.height_mm, LabelOptions{})) +
+                          up * (0.5 * t.height_mm);
+      for (const auto& [sheet, ends] : copies[seam_number_in(t.text)]) {
         if (sheet != static_cast<int>(s)) continue;
-        // Distance from the label's anchor to the edge segment.
+        // Distance from the label's middle to the edge segment.
         const Vec2 d = ends[1] - ends[0];
-        const double u = std::clamp(dot(t.at_mm - ends[0], d) / dot(d, d), 0.0, 1.0);
-        nearest = std::min(nearest, norm(t.at_mm - (ends[0] + d * u)));
+        const double u = std::clamp(dot(centre - ends[0], d) / dot(d, d), 0.0, 1.0);
+        nearest = std::min(nearest, norm(centre - (ends[0] + d * u)));
       }
       EXPECT_LT(nearest, 6.0) << "label " << t.text << " is far from its edge";
     }
@@ -323,8 +330,9 @@ TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
   EXPECT_LE(step_marks, 2 * ex.unfolding.seam_count());
   int missing = 0;
   for (int step = 1; step <= ex.unfolding.seam_count(); ++step)
-    missing += steps_shown.count("(" + std::to_string(step) + ")") == 0;
-  EXPECT_LE(missing, ex.unfolding.seam_count() / 10) << missing << " seams without a step mark";
+    missing += steps_shown.count("(" + number_text(step) + ")") == 0;
+  // Labels that name their mate's part and sheet take room the step marks had: up to one in six goes.
+  EXPECT_LE(missing, ex.unfolding.seam_count() / 6) << missing << " seams without a step mark";
   std::printf("%d of %d seams without a step mark on the sheets\n", missing, ex.unfolding.seam_count());
 }
 
@@ -338,4 +346,77 @@ TEST(Layout, UnusableOptionsAreLayoutErrors) {
   o = at_size(100);
   o.paper_mm = {0, 297};
   EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
+}
+
+TEST(Layout, NoLabelIsTurnedBeyondAQuarterTurnAndEveryAmbiguousNumberIsMarked) {
+  constexpr double kPi = 3.14159265358979323846;
+  for (const char* name : kExamples) {
+    const auto& ex = test::unfolded_example(name);
+    LayoutOptions o = at_size(160);
+    o.hints = true;
+    const LayoutResult r = layout_sheets(ex.unfolding, o);
+    EXPECT_EQ(r.label_audit.turned, 0) << name;
+    EXPECT_EQ(r.label_audit.unmarked, 0) << name;
+    int ambiguous = 0;
+    for (const Sheet& sheet : r.sheets)
+      for (const Text& t : sheet.texts) {
+        const double a = std::remainder(t.angle_rad, 2 * kPi);
+        EXPECT_TRUE(a >= -0.5 * kPi - 1e-9 && a < 0.5 * kPi) << name << ": \"" << t.text << "\" at " << a;
+        if (t.role != PathRole::Label) continue;
+        const int n = seam_number_in(t.text);
+        if (!reads_as_other_number_turned(n)) continue;
+        ++ambiguous;
+        EXPECT_NE(t.text.find(std::to_string(n) + "."), std::string::npos) << name << ": " << t.text;
+      }
+    EXPECT_GT(ambiguous, 0) << name << ": the check saw no ambiguous number";
+  }
+}
+
+TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const SplitResult split = split_to_fit(ex.mesh, ex.unfolding, at_size(150));
+  ASSERT_GT(split.unfolding.piece_count, 2);
+  const LayoutResult r = layout_sheets(split.unfolding, at_size(150));
+  ASSERT_GT(r.sheets.size(), 1u) << "the test wants mates on other sheets";
+  // Letters: one per part, as recorded, unique.
+  std::map<int, std::string> letter_on_sheet;
+  std::set<std::string> letters;
+  for (const Sheet& sheet : r.sheets)
+    for (const Text& t : sheet.texts)
+      if (t.role == PathRole::Piece) {
+        EXPECT_EQ(t.text, r.piece_letters[t.piece]);
+        EXPECT_TRUE(letter_on_sheet.emplace(t.piece, t.text).second) << "two letters for part " << t.piece;
+        letters.insert(t.text);
+        EXPECT_GE(t.height_mm, 2 - 1e-9);
+      }
+  EXPECT_EQ(static_cast<int>(letter_on_sheet.size()), split.unfolding.piece_count);
+  EXPECT_EQ(letters.size(), letter_on_sheet.size());
+  // Mates: the pieces on each side of every seam.
+  std::map<int, std::array<int, 2>> sides;
+  for (std::size_t e = 0; e < split.unfolding.edges.size(); ++e)
+    if (r.seam_number[e] > 0) {
+      const auto& edge = split.unfolding.edges[e];
+      sides[r.seam_number[e]] = {split.unfolding.piece_of_face[edge.face[0]],
+                                 split.unfolding.piece_of_face[edge.face[1]]};
+    }
+  int cross = 0, other_sheet = 0;
+  for (const Sheet& sheet : r.sheets)
+    for (const Text& t : sheet.texts) {
+      if (t.role != PathRole::Label) continue;
+      const auto [a, b] = sides.at(seam_number_in(t.text));
+      if (a == b) {
+        EXPECT_EQ(t.text, number_text(seam_number_in(t.text)));
+        continue;
+      }
+      ++cross;
+      const int mate = t.piece == a ? b : a;
+      std::string expected = r.piece_letters[mate] + " " + number_text(seam_number_in(t.text));
+      if (r.placements[mate].sheet != r.placements[t.piece].sheet) {
+        ++other_sheet;
+        expected += " p" + std::to_string(r.placements[mate].sheet + 1);
+      }
+      EXPECT_EQ(t.text, expected);
+    }
+  EXPECT_GT(cross, 0);
+  EXPECT_GT(other_sheet, 0);
 }

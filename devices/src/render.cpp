@@ -46,6 +46,10 @@ const RoleStyle& RenderOptions::style(PathRole role) const {
       return hint;
     case PathRole::RegMark:
       return regmark;
+    case PathRole::Piece:
+      return piece;
+    case PathRole::Sheet:
+      return sheet;
   }
   return cut;
 }

@@ -11,9 +11,9 @@
 namespace foldkit::devices::detail {
 
 /// Roles in painting order: fills and marks under everything, cuts above folds, marks on top.
-inline constexpr std::array<PathRole, 7> kPaintOrder = {PathRole::Tab,      PathRole::Hint, PathRole::Valley,
-                                                        PathRole::Mountain, PathRole::Cut,  PathRole::Label,
-                                                        PathRole::RegMark};
+inline constexpr std::array<PathRole, 9> kPaintOrder = {
+    PathRole::Tab, PathRole::Piece, PathRole::Hint,    PathRole::Valley, PathRole::Mountain,
+    PathRole::Cut, PathRole::Label, PathRole::RegMark, PathRole::Sheet};
 
 /// Colour `tint` (>= 0) of a palette of twelve colours that stay apart on paper (Path::tint).
 inline Rgb tint_colour(int tint) {

@@ -1,7 +1,7 @@
 // SVG written by hand rather than through Cairo's SVG surface: Cairo 1.16 cannot name groups, and
 // cutting software (Silhouette Studio, Inkscape, Cricut Design Space) picks layers by group id. Every
 // role gets its own <g id="…"> (also marked as an Inkscape layer), present even when empty so that
-// tools can rely on the seven ids, and texts stay <text> elements so they remain editable.
+// tools can rely on its ids, and texts stay <text> elements so they remain editable.
 #include <charconv>
 #include <cmath>
 #include <ostream>

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <optional>
 
+#include "foldkit/layout/box_grid.hpp"
+#include "foldkit/layout/label_text.hpp"
+
 namespace foldkit::layout {
 namespace {
 
@@ -14,12 +17,31 @@ struct Segment {
   bool fold = false;  // fold lines may be crossed when nothing else is left; outlines never
 };
 
-// What a label in one piece must keep clear of.
+// Grid cells of about a label's size: a query looks at a handful of cells.
+constexpr double kGridCell_mm = 4;
+// Labels may sit on tabs or stick out of tiny faces: the grid covers that much around the piece.
+constexpr double kGridBorder_mm = 20;
+
+// What a label in one piece must keep clear of, found through grids so that a query costs what is
+// near it, not the whole piece.
 struct PieceObstacles {
   std::vector<Segment> lines;
   std::vector<Polygon> labels;
-  std::vector<Box2> label_boxes;
+  std::vector<bool> label_active;  // retracted labels stay in the grid, switched off
+  BoxGrid line_grid, label_grid, triangle_grid;
+  explicit PieceObstacles(const Box2& region)
+      : line_grid(region, kGridCell_mm),
+        label_grid(region, kGridCell_mm),
+        triangle_grid(region, kGridCell_mm) {}
 };
+
+Box2 piece_region(const ScaledPiece& piece) {
+  Box2 b;
+  for (const Triangle2& t : piece.triangles_mm)
+    for (Vec2 v : t)
+      b.add(v);
+  return Box2{b.min - Vec2{kGridBorder_mm, kGridBorder_mm}, b.max + Vec2{kGridBorder_mm, kGridBorder_mm}};
+}
 
 Box2 grown(Box2 b, double d) {
   return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
@@ -33,7 +55,27 @@ Polygon label_box(Vec2 at, Vec2 dir, double width, double height) {
 }  // namespace
 
 double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options) {
-  return static_cast<double>(text.size()) * options.char_width * height_mm;
+  // Advances in digit widths, the larger of DejaVu Sans (print) and Hershey futural (pen): a period is
+  // under half a digit, a space 0.8 (Hershey's is wide), capitals about one (I narrow, M and W wide).
+  double digits = 0;
+  for (char c : text) {
+    if (c == '.') {
+      digits += 0.47;
+    } else if (c == ' ') {
+      digits += 0.8;
+    } else if (c == '(' || c == ')') {
+      digits += 0.71;
+    } else if (c == 'I') {
+      digits += 0.5;
+    } else if (c == 'M' || c == 'W') {
+      digits += 1.45;
+    } else if (c >= 'A' && c <= 'Z') {
+      digits += 1.1;
+    } else {
+      digits += 1;
+    }
+  }
+  return digits * options.char_width * height_mm;
 }
 
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams) {
@@ -60,14 +102,20 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
-                                std::span<const std::string> hints, const LabelOptions& o) {
-  std::vector<PieceObstacles> obstacles(pieces.size());
+                                std::span<const std::string> hints, const LabelOptions& o,
+                                std::span<const std::array<std::string, 2>> texts,
+                                std::span<const std::vector<Polygon>> taken) {
+  std::vector<PieceObstacles> obstacles;
+  obstacles.reserve(pieces.size());
   for (std::size_t p = 0; p < pieces.size(); ++p) {
+    obstacles.emplace_back(piece_region(pieces[p]));
+    PieceObstacles& ob = obstacles.back();
     auto add = [&](Vec2 a, Vec2 b, bool fold) {
       Box2 box;
       box.add(a);
       box.add(b);
-      obstacles[p].lines.push_back({a, b, box, fold});
+      ob.line_grid.insert(static_cast<int>(ob.lines.size()), box);
+      ob.lines.push_back({a, b, box, fold});
     };
     for (const OutlineLoop& loop : pieces[p].outline_mm)
       for (const OutlineEdge& e : loop)
@@ -75,31 +123,42 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
     if (p < fold_lines.size())
       for (const FoldLine& f : fold_lines[p])
         add(f.a, f.b, true);
+    for (std::size_t t = 0; t < pieces[p].triangles_mm.size(); ++t)
+      ob.triangle_grid.insert(static_cast<int>(t), bounds_of(pieces[p].triangles_mm[t]));
+    if (p < taken.size())
+      for (const Polygon& area : taken[p]) {
+        ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(area));
+        ob.labels.push_back(area);
+        ob.label_active.push_back(true);
+      }
   }
 
   // level 0: clear of every line and label; 1: may cross fold lines; 2: may touch the outline too.
   auto clear_of_everything = [&](int p, const Polygon& box, int level) {
     const Box2 reach = grown(bounds_of(box), o.clearance_mm);
-    for (const Segment& s : obstacles[p].lines) {
-      if ((level >= 1 && s.fold) || level >= 2 || !reach.overlaps(s.box)) continue;
-      const std::array<Vec2, 2> seg{s.a, s.b};
-      if (convex_overlap(box, seg, -o.clearance_mm)) return false;
+    const PieceObstacles& ob = obstacles[p];
+    if (level < 2) {
+      const bool clear_of_lines = ob.line_grid.visit(reach, [&](int i) {
+        const Segment& s = ob.lines[i];
+        if (level >= 1 && s.fold) return true;
+        const std::array<Vec2, 2> seg{s.a, s.b};
+        return !convex_overlap(box, seg, -o.clearance_mm);
+      });
+      if (!clear_of_lines) return false;
     }
-    for (std::size_t k = 0; k < obstacles[p].labels.size(); ++k)
-      if (reach.overlaps(obstacles[p].label_boxes[k]) &&
-          convex_overlap(box, obstacles[p].labels[k], -o.clearance_mm))
-        return false;
-    return true;
+    return ob.label_grid.visit(reach, [&](int k) {
+      return !ob.label_active[k] || !convex_overlap(box, ob.labels[k], -o.clearance_mm);
+    });
   };
   auto inside_piece = [&](int p, Vec2 point) {
-    for (const Triangle2& t : pieces[p].triangles_mm)
-      if (inside_convex(t, point, 0)) return true;
-    return false;
+    const Box2 at{point, point};
+    return !obstacles[p].triangle_grid.visit(
+        at, [&](int t) { return !inside_convex(pieces[p].triangles_mm[t], point, 0); });
   };
 
   std::vector<Label> labels;
   for (std::size_t s = 0; s < seams.size(); ++s) {
-    const std::string text = std::to_string(numbers[s]);
+    const std::string number = number_text(numbers[s]);
     const std::string hint = s < hints.size() ? hints[s] : std::string();
     // The side with a tab first: its label has room there for the hint. The hint may be dropped on a
     // crowded side, but every seam keeps its step on one side at least.
@@ -115,6 +174,7 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
       label.seam = static_cast<int>(s);
       label.side = k;
       label.piece = side.piece;
+      const std::string& text = s < texts.size() ? texts[s][k] : number;
       label.text = text;
       label.hint = hint;
       // With an assembly hint, the hint goes first when the side is crowded: the step is also in the
@@ -218,14 +278,16 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
     auto shows_hint = [](const std::optional<Label>& l) { return l && !l->hint.empty(); };
     auto commit = [&](const std::optional<Label>& l) {
       if (!l) return;
-      obstacles[l->piece].labels.push_back(l->box_mm);
-      obstacles[l->piece].label_boxes.push_back(bounds_of(l->box_mm));
+      PieceObstacles& ob = obstacles[l->piece];
+      ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(l->box_mm));
+      ob.labels.push_back(l->box_mm);
+      ob.label_active.push_back(true);
       labels.push_back(*l);
     };
     auto retract = [&](const std::optional<Label>& l) {
       if (!l) return;
-      obstacles[l->piece].labels.pop_back();
-      obstacles[l->piece].label_boxes.pop_back();
+      // The grid cannot forget an item: the retracted label is switched off instead.
+      obstacles[l->piece].label_active[obstacles[l->piece].labels.size() - 1] = false;
       labels.pop_back();
     };
     const int second = 1 - first;

@@ -9,8 +9,11 @@
 #include "foldkit/layout/arrows.hpp"
 #include "foldkit/layout/edge_numbers.hpp"
 #include "foldkit/layout/hints.hpp"
+#include "foldkit/layout/label_audit.hpp"
+#include "foldkit/layout/label_text.hpp"
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/pack.hpp"
+#include "foldkit/layout/piece_letters.hpp"
 #include "foldkit/layout/scale.hpp"
 #include "foldkit/layout/tabs.hpp"
 
@@ -53,9 +56,43 @@ struct Draft {
   TabPlan tabs;
   std::vector<Label> labels;
   std::vector<Arrow> arrows;
+  std::vector<std::string> letters;  // per piece
+  std::vector<PieceLetter> piece_letters;
 };
 
-Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
+// The sheet count to leave room for in seam labels (" p3"), 0 for none: only when the parts may
+// need more than one sheet, since the room costs legibility on small faces. A label whose mate ends up
+// on a sheet with more digits is shrunk into its box.
+int likely_sheets(const Draft& d, const LayoutOptions& o, std::optional<int> max_sheets) {
+  if ((max_sheets && *max_sheets <= 1) || d.pieces.size() < 2) return 0;
+  double area = 0;
+  for (const ScaledPiece& p : d.pieces)
+    area += p.area_mm2;
+  for (const auto& tab : d.tabs.tab_of_seam)
+    if (tab) area += signed_area(tab->quad_mm);
+  const Box2 printable = printable_area(o);
+  // Packing rarely fills more than 45% of a sheet with papercraft shapes.
+  const double sheets = area / (0.45 * printable.width() * printable.height());
+  return sheets > 1 ? static_cast<int>(std::ceil(sheets)) : 0;
+}
+
+// The longest text each side of each seam may print: the mate's letter when it is another part, and
+// room for a sheet number as large as the part count when the parts may spread over sheets.
+std::vector<std::array<std::string, 2>> reserved_texts(const Draft& d, int sheets) {
+  std::vector<std::array<std::string, 2>> texts(d.seams.size());
+  // Digits are all as wide: the likely sheet count stands for any sheet number of as many digits.
+  const int worst_sheet = sheets;
+  for (std::size_t s = 0; s < d.seams.size(); ++s)
+    for (int k = 0; k < 2; ++k) {
+      const int own = d.seams[s].sides[k].piece, mate = d.seams[s].sides[1 - k].piece;
+      const bool other = mate >= 0 && mate != own;
+      texts[s][k] = seam_label_text(d.numbers[s], other ? d.letters[mate] : "", worst_sheet);
+    }
+  return texts;
+}
+
+Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
+                  std::optional<int> max_sheets) {
   Draft d;
   d.pieces = scaled_pieces(u, scale);
   d.seams = find_seams(u, d.pieces);
@@ -79,6 +116,18 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   }
   if (o.arrows) d.arrows = seam_arrows(d.pieces, d.seams);
 
+  const std::vector<int> rank = letter_ranks(static_cast<int>(d.pieces.size()), d.seams, d.order);
+  for (int r : rank)
+    d.letters.push_back(piece_letter(r));
+  std::vector<std::vector<Polygon>> taken(d.pieces.size());
+  if (o.piece_letters) {
+    PieceLetterOptions letter_options;
+    letter_options.min_mm = o.label_min_mm;
+    d.piece_letters = place_piece_letters(d.pieces, d.folds, d.letters, letter_options);
+    for (const PieceLetter& l : d.piece_letters)
+      taken[l.piece].push_back(l.footprint_mm);
+  }
+
   if (o.numbers) {
     std::vector<std::vector<FoldLine>> avoid = d.folds;
     for (const Arrow& a : d.arrows)
@@ -89,7 +138,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
       for (std::size_t step = 0; step < d.order.size(); ++step) {
         // Appending piecewise: GCC 12 warns (-Wrestrict, a known false positive) on "(" + s + ")".
         std::string& hint = hints[d.order[step]];
-        hint = std::to_string(step + 1);
+        hint = number_text(static_cast<int>(step) + 1);
         hint.insert(hint.begin(), '(');
         hint.push_back(')');
       }
@@ -99,7 +148,8 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
     label_options.max_mm = o.label_max_mm;
     // Arrows sit along the edges: lift the labels above them.
     if (o.arrows) label_options.gap_mm = 1.6;
-    d.labels = place_labels(d.pieces, d.seams, d.numbers, d.tabs, avoid, hints, label_options);
+    d.labels = place_labels(d.pieces, d.seams, d.numbers, d.tabs, avoid, hints, label_options,
+                            reserved_texts(d, likely_sheets(d, o, max_sheets)), taken);
   }
   return d;
 }
@@ -151,6 +201,54 @@ Text make_text(const std::string& s, Vec2 at, Vec2 dir, double h, PathRole role,
   return Text{s, to_sheet(at, t, paper_h), h, std::atan2(-d.y, d.x), role, piece};
 }
 
+// The texts of a label as printed: `text` (the number, with the mate's letter and sheet) and its hint,
+// centred in the box the label reserved, turned half a turn when the piece's rotation would put them
+// more than 90 degrees from upright. The box stays the same, so what it keeps clear of still holds.
+std::vector<Text> upright_label_texts(const Label& label, const std::string& text, const Rigid2& t,
+                                      double paper_h) {
+  constexpr double kPi = 3.14159265358979323846;
+  const LabelOptions metrics;
+  const double reserved = label.box_mm.size() >= 2 ? norm(label.box_mm[1] - label.box_mm[0]) : 0;
+  auto width_at = [&](double height) {
+    return label_width_mm(text, height, metrics) +
+           (label.hint.empty() ? 0 : 0.3 * height + label_width_mm(label.hint, 0.75 * height, metrics));
+  };
+  // A mate on a sheet with more digits than reserved: shrink into the box rather than overflow it.
+  const double h =
+      std::min(label.height_mm, label.height_mm * reserved / std::max(width_at(label.height_mm), 1e-9));
+  const double hint_h = 0.75 * h, hint_gap = 0.3 * h;
+  const double text_w = label_width_mm(text, h, metrics);
+  const double total = width_at(h);
+  const Vec2 up = perp_ccw(label.dir);
+  const Vec2 d = t.apply_dir(label.dir);
+  // Page angle, clockwise positive (y down); upright means within [-90, 90) degrees: vertical text
+  // reads from the right, bottom to top.
+  const double page_angle = std::atan2(-d.y, d.x);
+  const bool turn = page_angle >= 0.5 * kPi - 1e-9 || page_angle < -0.5 * kPi - 1e-9;
+  const double lead = std::max(0.0, 0.5 * (reserved - total));
+  Vec2 start = label.at_mm + label.dir * lead;
+  Vec2 dir = label.dir;
+  if (turn) {
+    // Read from the box's other end, glyphs growing towards the edge: the same rectangle.
+    start = label.at_mm + label.dir * (lead + total) + up * h;
+    dir = -1.0 * label.dir;
+  }
+  std::vector<Text> out{make_text(text, start, dir, h, PathRole::Label, label.piece, t, paper_h)};
+  if (!label.hint.empty())
+    out.push_back(make_text(label.hint, start + dir * (text_w + hint_gap), dir, hint_h, PathRole::Hint,
+                            label.piece, t, paper_h));
+  return out;
+}
+
+// A part letter, upright on the page, centred on its spot.
+Text letter_text(const PieceLetter& letter, const Rigid2& t, double paper_h) {
+  const double w = letter_width_mm(letter.text, letter.height_mm, PieceLetterOptions{});
+  const Vec2 centre = to_sheet(letter.centre_mm, t, paper_h);
+  return Text{letter.text,      centre + Vec2{-0.5 * w, 0.5 * letter.height_mm},
+              letter.height_mm, 0,
+              PathRole::Piece,  letter.piece};
+}
+
 // The assembly-order list as text blocks (sheet frame is applied later), each at most `max_h` tall.
 struct ListBlock {
   std::vector<std::string> lines;
@@ -191,6 +289,36 @@ std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
   return blocks;
 }
 
+// How much larger the model must be for the labels that found no clear spot to find one: per label,
+// the scale at which its face is wide enough for the label's box at its lift above the edge (a
+// triangle narrows linearly towards its apex), then the factor that leaves at most 2% of the labels
+// without room (a sliver face needs absurd sizes and should not decide the advice).
+void measure_label_room(const Draft& d, const LayoutOptions& o, LayoutResult& r) {
+  constexpr double kTolerated = 0.02;
+  const LabelOptions metrics;
+  std::vector<double> factors;
+  for (const Label& label : d.labels) {
+    if (!label.crowded && !label.over_fold) continue;
+    const SeamSide& side = d.seams[label.seam].sides[label.side];
+    const ScaledPiece& piece = d.pieces[side.piece];
+    const OutlineEdge& e = piece.outline_mm[side.loop][side.index];
+    const auto k = std::lower_bound(piece.faces.begin(), piece.faces.end(), e.face) - piece.faces.begin();
+    const double length = norm(e.b - e.a);
+    if (!(length > 0) || k >= static_cast<std::ptrdiff_t>(piece.faces.size())) continue;
+    const double height = 2 * std::fabs(signed_area(piece.triangles_mm[k])) / length;
+    const double h = o.label_min_mm;
+    const double width =
+        norm(label.box_mm[1] - label.box_mm[0]) * h / label.height_mm + 2 * metrics.clearance_mm;
+    const double lift = metrics.gap_mm + h + metrics.clearance_mm;
+    factors.push_back((width + lift * length / std::max(height, 1e-9)) / length);
+  }
+  r.labels_without_room = static_cast<int>(factors.size());
+  const auto allowed = static_cast<std::size_t>(kTolerated * static_cast<double>(d.labels.size()));
+  if (factors.size() <= allowed) return;
+  std::sort(factors.begin(), factors.end(), std::greater<>());
+  r.label_room_factor = std::max(1.05, factors[allowed]);
+}
+
 struct Attempt {
   LayoutResult result;
   bool complete = false;
@@ -207,7 +335,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   const Box2 area = flip_box(area_down, paper_h);
   const Vec2 area_size{area.width(), area.height()};
 
-  Draft d = draw_pieces(u, o, scale);
+  Draft d = draw_pieces(u, o, scale, max_sheets);
   std::vector<PackItem> items = pack_items_of(d, piece_room_mm(o));
   const std::size_t piece_items = items.size();
   std::vector<ListBlock> blocks;
@@ -272,6 +400,13 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
       tab_at[side.piece][side.loop][side.index] = &*tab;
     }
 
+  // Labels by piece: emitting them piece by piece must not scan every label for every piece.
+  std::vector<std::vector<int>> labels_of(d.pieces.size());
+  for (std::size_t i = 0; i < d.labels.size(); ++i)
+    labels_of[d.labels[i].piece].push_back(static_cast<int>(i));
+  std::vector<std::vector<const Tab*>> tabs_of(d.pieces.size());
+  for (const auto& tab : d.tabs.tab_of_seam)
+    if (tab) tabs_of[tab->piece].push_back(&*tab);
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
     const PackPlacement& place = packed.placements[p];
     Sheet& sheet = r.sheets[place.sheet];
@@ -299,8 +434,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     }
     for (const FoldLine& f : d.folds[p])
       sheet.paths.push_back({f.role, {to_sheet(f.a, t, paper_h), to_sheet(f.b, t, paper_h)}, false, piece});
-    for (const auto& tab : d.tabs.tab_of_seam) {
-      if (!tab || tab->piece != piece) continue;
+    for (const Tab* tab : tabs_of[p]) {
       Path area{PathRole::Tab, {}, true, piece};
       for (Vec2 v : tab->quad_mm)
         area.points_mm.push_back(to_sheet(v, t, paper_h));
@@ -321,20 +455,19 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
       arrow.tint = d.numbers[a.seam] - 1;
       sheet.paths.push_back(std::move(arrow));
     }
-    for (const Label& label : d.labels) {
-      if (label.piece != piece) continue;
-      sheet.texts.push_back(
-          make_text(label.text, label.at_mm, label.dir, label.height_mm, PathRole::Label, piece, t, paper_h));
-      if (!label.hint.empty()) {
-        const Vec2 at =
-            label.at_mm +
-            label.dir * (label_width_mm(label.text, label.height_mm, LabelOptions{}) + 0.3 * label.height_mm);
-        sheet.texts.push_back(
-            make_text(label.hint, at, label.dir, 0.75 * label.height_mm, PathRole::Hint, piece, t, paper_h));
-      }
+    for (int li : labels_of[p]) {
+      const Label& label = d.labels[li];
+      const int mate = d.seams[label.seam].sides[1 - label.side].piece;
+      const int mate_sheet = mate >= 0 ? packed.placements[mate].sheet : place.sheet;
+      const std::string text =
+          seam_label_text(d.numbers[label.seam], mate >= 0 && mate != piece ? d.letters[mate] : "",
+                          mate_sheet != place.sheet ? mate_sheet + 1 : 0);
+      for (Text& out : upright_label_texts(label, text, t, paper_h))
+        sheet.texts.push_back(std::move(out));
       st.labels += 1;
       st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);
     }
+    if (p < d.piece_letters.size()) sheet.texts.push_back(letter_text(d.piece_letters[p], t, paper_h));
   }
   for (int s : d.tabs.dropped) {
     const SeamSide& side = d.seams[s].sides[0];
@@ -388,22 +521,18 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
       const OutlineEdge& second = loop[a_first ? b.index : a.index];
       slits += norm(first.a - second.b) < std::min(o.min_tab_width_mm, o.tab_width_mm) + 0.5;
     }
+    // The seam numbers themselves go to dropped_tab_seams (JSON): a list of hundreds is no note.
     r.notes.push_back(
         std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
         (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") +
-        "): " + list);
+        ")");
+    for (int s : d.tabs.dropped)
+      r.dropped_tab_seams.push_back(d.numbers[s]);
   }
-  int crowded = 0, over_fold = 0;
-  for (const Label& label : d.labels) {
-    crowded += label.crowded;
-    over_fold += label.over_fold;
-  }
-  if (over_fold > 0)
-    r.notes.push_back(std::to_string(over_fold) +
-                      " edge number(s) cross a fold line (faces too small at this size)");
-  if (crowded > 0)
-    r.notes.push_back(std::to_string(crowded) +
-                      " edge number(s) had no clear spot and touch a line or label");
+  measure_label_room(d, o, r);
+  r.piece_letters = d.letters;
+  for (const Sheet& sheet : r.sheets)
+    r.label_audit += audit_labels(sheet);
   r.seam_number.assign(u.edges.size(), 0);
   for (std::size_t s = 0; s < d.seams.size(); ++s)
     r.seam_number[d.seams[s].edge] = d.numbers[s];

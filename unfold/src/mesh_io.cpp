@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "face_colours.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/decimate.hpp"
 #include "mesh_io_soup.hpp"
@@ -27,11 +28,16 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::PolygonSoup;
+using detail::RawColours;
+
+Colour colour_of(double r, double g, double b) {
+  return {std::clamp(r, 0.0, 1.0), std::clamp(g, 0.0, 1.0), std::clamp(b, 0.0, 1.0)};
+}
 
 /// Collects what an OpenMesh reader finds, unchanged; everything else a reader may call is ignored.
 class SoupImporter final : public OpenMesh::IO::BaseImporter {
  public:
-  explicit SoupImporter(PolygonSoup& soup) : soup_(soup) {}
+  SoupImporter(PolygonSoup& soup, RawColours& colours) : soup_(soup), colours_(colours) {}
 
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override { return add({p[0], p[1], p[2]}); }
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override { return add({p[0], p[1], p[2]}); }
@@ -48,11 +54,20 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
     return OpenMesh::FaceHandle(static_cast<int>(soup_.polygons.size()) - 1);
   }
   OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return OpenMesh::FaceHandle(); }
-  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                          const std::vector<OpenMesh::Vec2f>&) override {}
+  void add_face_texcoords(OpenMesh::FaceHandle fh, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>& uvs) override {
+    if (auto* slot = face_slot(colours_.face_uvs, fh)) {
+      slot->clear();
+      for (const auto& uv : uvs)
+        slot->push_back({uv[0], uv[1]});
+    }
+  }
   void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
                           const std::vector<OpenMesh::Vec3f>&) override {}
-  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+  void set_face_texindex(OpenMesh::FaceHandle fh, int index) override {
+    // OpenMesh numbers textures from 1 and gives 0 to faces without one.
+    if (auto* slot = face_slot(colours_.face_texture, fh, -1)) *slot = index > 0 ? index : -1;
+  }
   void set_point(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& p) override {
     if (vh.idx() >= 0 && vh.idx() < static_cast<int>(soup_.vertices.size()))
       soup_.vertices[vh.idx()] = {p[0], p[1], p[2]};
@@ -60,10 +75,18 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
   void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
   void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
   void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f&) override {}
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3uc& c) override {
+    set_vertex_colour(vh, colour_of(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0));
+  }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4uc& c) override {
+    set_vertex_colour(vh, colour_of(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0));
+  }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& c) override {
+    set_vertex_colour(vh, colour_of(c[0], c[1], c[2]));
+  }
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4f& c) override {
+    set_vertex_colour(vh, colour_of(c[0], c[1], c[2]));
+  }
   void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f&) override {}
   void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
@@ -80,12 +103,22 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
   void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
   void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f&) override {}
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec3uc& c) override {
+    set_face_colour(fh, colour_of(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0));
+  }
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec4uc& c) override {
+    set_face_colour(fh, colour_of(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0));
+  }
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec3f& c) override {
+    set_face_colour(fh, colour_of(c[0], c[1], c[2]));
+  }
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec4f& c) override {
+    set_face_colour(fh, colour_of(c[0], c[1], c[2]));
+  }
   void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-  void add_texture_information(int, std::string) override {}
+  void add_texture_information(int id, std::string file) override {
+    colours_.texture_names[id] = std::move(file);
+  }
   // Header counts are not trusted for allocation: a hostile header could ask for terabytes.
   void reserve(unsigned int, unsigned int, unsigned int) override {}
   size_t n_vertices() const override { return soup_.vertices.size(); }
@@ -97,7 +130,24 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
     soup_.vertices.push_back(p);
     return OpenMesh::VertexHandle(static_cast<int>(soup_.vertices.size()) - 1);
   }
+  // The slot of face fh in a per-face list, grown on demand; nullptr for a handle no face has.
+  template <class T>
+  T* face_slot(std::vector<T>& list, OpenMesh::FaceHandle fh, T fill = T{}) {
+    if (fh.idx() < 0 || fh.idx() >= static_cast<int>(soup_.polygons.size())) return nullptr;
+    if (list.size() < soup_.polygons.size()) list.resize(soup_.polygons.size(), fill);
+    return &list[fh.idx()];
+  }
+  void set_face_colour(OpenMesh::FaceHandle fh, Colour c) {
+    if (auto* slot = face_slot(colours_.face_colour, fh)) *slot = c;
+  }
+  void set_vertex_colour(OpenMesh::VertexHandle vh, Colour c) {
+    if (vh.idx() < 0 || vh.idx() >= static_cast<int>(soup_.vertices.size())) return;
+    if (colours_.vertex_colour.size() < soup_.vertices.size())
+      colours_.vertex_colour.resize(soup_.vertices.size());
+    colours_.vertex_colour[vh.idx()] = c;
+  }
   PolygonSoup& soup_;
+  RawColours& colours_;
 };
 
 std::string lower(std::string s) {
@@ -491,8 +541,10 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
     throw InputError(name, "file is " + std::to_string(size) + " bytes, over the limit of " +
                                std::to_string(options.max_file_bytes) + " bytes");
   const std::string ext = lower(path.extension().string());
-  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply")
-    throw InputError(name, "unsupported file type '" + ext + "' (expected .obj, .off, .stl or .ply)");
+  const bool gltf = ext == ".gltf" || ext == ".glb";
+  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply" && !gltf)
+    throw InputError(name,
+                     "unsupported file type '" + ext + "' (expected .obj, .off, .stl, .ply, .gltf or .glb)");
 
   if (ext == ".stl" && size >= 84) {
     // A consistent binary STL states its triangle count up front: refuse one over the limit before
@@ -510,7 +562,11 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(name, "empty file (only whitespace)");
   detail::RepairOptions repair;
-  if (ext == ".obj") {
+  std::vector<std::string> reader_notes;
+  PolygonSoup soup;
+  if (gltf) {
+    soup = detail::read_gltf(path, name, options.max_file_bytes, reader_notes);
+  } else if (ext == ".obj") {
     check_obj_text(bytes, name, options.face_limit);
   } else if (ext == ".stl") {
     if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
@@ -521,12 +577,27 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
     check_ply_header(bytes, name, options.face_limit);
   }
 
-  silence_openmesh();
-  PolygonSoup soup;
-  SoupImporter importer(soup);
-  OpenMesh::IO::Options read_options;
-  if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
-    throw InputError(name, "unparsable " + ext.substr(1) + " file");
+  if (!gltf) {
+    silence_openmesh();
+    RawColours colours;
+    SoupImporter importer(soup, colours);
+    OpenMesh::IO::Options read_options;
+    read_options += OpenMesh::IO::Options::FaceTexCoord;
+    read_options += OpenMesh::IO::Options::FaceColor;
+    read_options += OpenMesh::IO::Options::VertexColor;
+    if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
+      throw InputError(name, "unparsable " + ext.substr(1) + " file");
+    // map_Kd names are relative to the MTL file, which mtllib names relative to the OBJ.
+    fs::path texture_dir = path.parent_path();
+    if (ext == ".obj")
+      if (const auto mtl = detail::obj_material_library(bytes, path)) {
+        texture_dir = mtl->parent_path();
+        std::error_code exists_ec;
+        if (!fs::is_regular_file(*mtl, exists_ec))
+          reader_notes.push_back("material library " + mtl->string() + " not found: faces print white");
+      }
+    detail::attach_raw_colours(std::move(colours), texture_dir, soup, reader_notes);
+  }
   if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
 
   std::uint64_t triangles = 0;
@@ -539,6 +610,7 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   LoadedMesh out;
   out.original_faces = static_cast<int>(soup.polygons.size());
   out.mesh = detail::repair_soup(std::move(soup), name, repair, out.notes);
+  out.notes.insert(out.notes.end(), reader_notes.begin(), reader_notes.end());
   if (ext == ".stl")
     out.notes.insert(out.notes.begin(),
                      "welded " + std::to_string(3 * static_cast<std::uint64_t>(out.original_faces)) +

@@ -109,6 +109,14 @@ class EdgeFaces {
   std::vector<std::pair<int, int>> uses_;
 };
 
+// Where each triangle's corners came from, so that texture coordinates and materials follow every repair:
+// corner ids number the soup's polygon corners in order (polygon 0's first), polygon is the source polygon.
+struct TriOrigin {
+  std::vector<Tri> corner;
+  std::vector<int> polygon;
+  void flip(int f) { std::swap(corner[f][1], corner[f][2]); }
+};
+
 EdgeFaces edge_faces(const std::vector<Tri>& tris) {
   return EdgeFaces(tris);
 }
@@ -126,22 +134,32 @@ bool is_zero_area(const std::vector<Vec3>& p, const Tri& t) {
   return norm(cross(b - a, c - a)) <= kZeroAreaRelative * l2 || l2 == 0.0;
 }
 
-std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::string>& notes) {
+std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::string>& notes,
+                                 TriOrigin& origin) {
   std::vector<Tri> tris;
   tris.reserve(soup.polygons.size());
   std::size_t quads = 0, ngons = 0;
   std::vector<Vec3> pts;
-  for (const auto& poly : soup.polygons) {
+  int first_corner = 0;
+  for (int p = 0; p < static_cast<int>(soup.polygons.size()); ++p) {
+    const auto& poly = soup.polygons[p];
+    const int c = first_corner;
+    first_corner += static_cast<int>(poly.size());
     if (poly.size() == 3) {
       tris.push_back({poly[0], poly[1], poly[2]});
+      origin.corner.push_back({c, c + 1, c + 2});
+      origin.polygon.push_back(p);
       continue;
     }
     (poly.size() == 4 ? quads : ngons)++;
     pts.clear();
     for (int v : poly)
       pts.push_back(soup.vertices[v]);
-    for (const Tri& t : triangulate_polygon(pts))
+    for (const Tri& t : triangulate_polygon(pts)) {
       tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
+      origin.corner.push_back({c + t[0], c + t[1], c + t[2]});
+      origin.polygon.push_back(p);
+    }
   }
   if (quads + ngons > 0)
     notes.push_back("triangulated " + plural(quads, "quad") + " and " + plural(ngons, "n-gon"));
@@ -162,7 +180,8 @@ void check_edge_manifold(const std::vector<Tri>& tris, const EdgeFaces& map,
 
 // Orients each component consistently by breadth-first search; keeps the majority orientation of the
 // file so that a few flipped faces are what gets fixed.
-std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, const std::string& name) {
+std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, const std::string& name,
+                                TriOrigin* origin) {
   const int nf = static_cast<int>(tris.size());
   std::vector<int> component(nf, -1);
   std::vector<char> flipped(nf, 0);
@@ -189,6 +208,7 @@ std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, co
             component[g] = seed;
             if (same_direction) {
               std::swap(tris[g][1], tris[g][2]);
+              if (origin) origin->flip(g);
               flipped[g] = 1;
             }
             queue.push_back(g);
@@ -203,8 +223,10 @@ std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, co
     const auto flips = static_cast<std::size_t>(
         std::count_if(members.begin(), members.end(), [&](int f) { return flipped[f]; }));
     if (2 * flips > members.size()) {
-      for (int f : members)
+      for (int f : members) {
         std::swap(tris[f][1], tris[f][2]);
+        if (origin) origin->flip(f);
+      }
       total_flips += members.size() - flips;
     } else {
       total_flips += flips;
@@ -245,7 +267,7 @@ std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri
     if (uses.size() > 2) return 0;
   try {
     std::vector<Tri> oriented = trial;
-    orient_consistently(oriented, welded_map, "");
+    orient_consistently(oriented, welded_map, "", nullptr);
   } catch (const InputError&) {
     return 0;
   }
@@ -256,7 +278,8 @@ std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri
 // Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
 // collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
 // opposite edge is removed by flipping that edge with the neighbour across it.
-std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, const std::string& name) {
+std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, const std::string& name,
+                             TriOrigin& origin) {
   std::size_t fixed = 0;
   for (int pass = 0; pass < 32; ++pass) {
     std::vector<int> degenerate;
@@ -337,14 +360,25 @@ std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, 
       if (w == p || map.count(edge_key(p, w))) continue;
       tris[f] = {p, q, w};
       tris[g] = {p, w, r};
+      // The corners keep the texture coordinates of the corners they were (p and q of f, w and r of g).
+      const Tri cf = origin.corner[f], cg = origin.corner[g];
+      const int cp = cf[(longest + 2) % 3], cq = cf[longest], cw = cg[(j + 2) % 3], cr = cg[j];
+      origin.corner[f] = {cp, cq, cw};
+      origin.corner[g] = {cp, cw, cr};
       touched[f] = touched[g] = 1;
       ++progress;  // the flipped-in pair covers what the neighbour covered: the cap is gone
     }
     std::vector<Tri> kept;
+    TriOrigin kept_origin;
     kept.reserve(tris.size());
     for (std::size_t f = 0; f < tris.size(); ++f)
-      if (!removed[f]) kept.push_back(tris[f]);
+      if (!removed[f]) {
+        kept.push_back(tris[f]);
+        kept_origin.corner.push_back(origin.corner[f]);
+        kept_origin.polygon.push_back(origin.polygon[f]);
+      }
     tris = std::move(kept);
+    origin = std::move(kept_origin);
     fixed += progress;
     if (progress == 0) break;
   }
@@ -390,6 +424,67 @@ std::size_t split_pinched_vertices(std::vector<Vec3>& points, std::vector<int>& 
   return static_cast<std::size_t>(std::count(split.begin(), split.end(), 1));
 }
 
+// Attribute lists must match the polygons they describe: a reader bug, not a user's, but checked here so
+// that no repair indexes past them.
+void check_attributes(const PolygonSoup& soup, const std::string& name) {
+  const std::size_t n = soup.polygons.size();
+  if (!soup.polygon_uvs.empty()) {
+    if (soup.polygon_uvs.size() != n) throw InputError(name, "texture coordinates do not match the faces");
+    for (std::size_t f = 0; f < n; ++f) {
+      if (!soup.polygon_uvs[f].empty() && soup.polygon_uvs[f].size() != soup.polygons[f].size())
+        throw InputError(name, "face " + std::to_string(f + 1) + " has " +
+                                   std::to_string(soup.polygon_uvs[f].size()) + " texture coordinates for " +
+                                   std::to_string(soup.polygons[f].size()) + " corners");
+      for (Vec2 uv : soup.polygon_uvs[f])
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+          throw InputError(name, "face " + std::to_string(f + 1) + " has a non-finite texture coordinate");
+    }
+  }
+  if (!soup.polygon_material.empty()) {
+    if (soup.polygon_material.size() != n) throw InputError(name, "materials do not match the faces");
+    for (int m : soup.polygon_material)
+      if (m < -1 || m >= static_cast<int>(soup.materials.size()))
+        throw InputError(name, "a face names material " + std::to_string(m + 1) + " of " +
+                                   std::to_string(soup.materials.size()));
+  }
+}
+
+// Removes polygons left with fewer than three corners, and their attributes with them.
+void drop_short_polygons(PolygonSoup& soup) {
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    if (soup.polygons[f].size() < 3) continue;
+    soup.polygons[kept] = std::move(soup.polygons[f]);
+    if (!soup.polygon_uvs.empty()) soup.polygon_uvs[kept] = std::move(soup.polygon_uvs[f]);
+    if (!soup.polygon_material.empty()) soup.polygon_material[kept] = soup.polygon_material[f];
+    ++kept;
+  }
+  soup.polygons.resize(kept);
+  if (!soup.polygon_uvs.empty()) soup.polygon_uvs.resize(kept);
+  if (!soup.polygon_material.empty()) soup.polygon_material.resize(kept);
+}
+
+// The mesh's face_uv, face_material and materials from where each triangle came from. A polygon without
+// texture coordinates in a file that has some gets (0, 0) at every corner: it prints in its colour.
+void attach_attributes(const PolygonSoup& soup, const TriOrigin& origin, Mesh& mesh) {
+  if (!soup.polygon_uvs.empty()) {
+    std::vector<Vec2> corner_uv;
+    for (std::size_t f = 0; f < soup.polygons.size(); ++f)
+      for (std::size_t k = 0; k < soup.polygons[f].size(); ++k)
+        corner_uv.push_back(soup.polygon_uvs[f].empty() ? Vec2{} : soup.polygon_uvs[f][k]);
+    mesh.face_uv.resize(origin.corner.size());
+    for (std::size_t t = 0; t < origin.corner.size(); ++t)
+      for (int i = 0; i < 3; ++i)
+        mesh.face_uv[t][i] = corner_uv[origin.corner[t][i]];
+  }
+  if (!soup.polygon_material.empty()) {
+    mesh.face_material.resize(origin.polygon.size());
+    for (std::size_t t = 0; t < origin.polygon.size(); ++t)
+      mesh.face_material[t] = soup.polygon_material[origin.polygon[t]];
+  }
+  mesh.materials = soup.materials;
+}
+
 }  // namespace
 
 Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
@@ -428,16 +523,24 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
         v = remap[v];
   }
 
+  check_attributes(soup, name);
   std::size_t dropped = 0;
-  for (auto& poly : soup.polygons) {
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    auto& poly = soup.polygons[f];
     std::vector<int> clean;
-    for (int v : poly)
-      if (std::find(clean.begin(), clean.end(), v) == clean.end()) clean.push_back(v);
+    std::vector<Vec2> clean_uvs;
+    for (std::size_t k = 0; k < poly.size(); ++k)
+      if (std::find(clean.begin(), clean.end(), poly[k]) == clean.end()) {
+        clean.push_back(poly[k]);
+        if (!soup.polygon_uvs.empty() && !soup.polygon_uvs[f].empty())
+          clean_uvs.push_back(soup.polygon_uvs[f][k]);
+      }
     if (clean.size() < 3) ++dropped;
     poly = std::move(clean);
+    if (!soup.polygon_uvs.empty()) soup.polygon_uvs[f] = std::move(clean_uvs);
   }
   if (dropped > 0) {
-    std::erase_if(soup.polygons, [](const auto& p) { return p.size() < 3; });
+    drop_short_polygons(soup);
     notes.push_back("dropped " + plural(dropped, "face") + " with repeated corners");
     if (soup.polygons.empty()) throw InputError(name, "every face has repeated corners");
   }
@@ -451,7 +554,8 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
     if (unused > 0 && !options.weld_all)
       notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
   }
-  std::vector<Tri> tris = triangulate_all(soup, notes);
+  TriOrigin origin;
+  std::vector<Tri> tris = triangulate_all(soup, notes, origin);
   std::vector<Vec3> points = std::move(soup.vertices);
   if (!options.weld_all) {
     if (const std::size_t seams = weld_boundary_seams(points, tris); seams > 0)
@@ -460,10 +564,10 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
 
   EdgeFaces map = edge_faces(tris);
   check_edge_manifold(tris, map, file_index, name);
-  if (const std::size_t flips = orient_consistently(tris, map, name); flips > 0)
+  if (const std::size_t flips = orient_consistently(tris, map, name, &origin); flips > 0)
     notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
 
-  if (const std::size_t fixed = remove_zero_area(points, tris, name); fixed > 0)
+  if (const std::size_t fixed = remove_zero_area(points, tris, name, origin); fixed > 0)
     notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
   if (tris.empty()) throw InputError(name, "every face has zero area");
   if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
@@ -501,13 +605,18 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
     ++components;
     if (closed.count(root) || vol >= 0) continue;
     for (int f = 0; f < nf; ++f)
-      if (find_root(parent, f) == root) std::swap(tris[f][1], tris[f][2]);
+      if (find_root(parent, f) == root) {
+        std::swap(tris[f][1], tris[f][2]);
+        origin.flip(f);
+      }
     ++turned;
   }
   if (turned > 0) notes.push_back("turned " + plural(turned, "closed component") + " outward");
   if (components > 1)
     notes.push_back(std::to_string(components) + " connected components: unfolded separately");
-  return make_mesh(std::move(used), std::move(tris), name);
+  Mesh mesh = make_mesh(std::move(used), std::move(tris), name);
+  attach_attributes(soup, origin, mesh);
+  return mesh;
 }
 
 }  // namespace foldkit::unfold::detail

@@ -14,6 +14,12 @@ namespace foldkit::unfold::detail {
 struct PolygonSoup {
   std::vector<Vec3> vertices;
   std::vector<std::vector<int>> polygons;
+  /// Per polygon, the texture coordinates of its corners (one per index of polygons[p]); empty when the
+  /// file has none. A polygon without coordinates in a file that has some gets an empty list.
+  std::vector<std::vector<Vec2>> polygon_uvs;
+  /// Per polygon, an index into `materials`; empty when the file has no colours.
+  std::vector<int> polygon_material;
+  std::vector<Material> materials;
 };
 
 /// What to do to a soup; `weld_all` for formats without shared vertices (STL).

@@ -32,7 +32,9 @@ struct RenderOptions {
   RoleStyle tab{{0.45, 0.45, 0.45}, 0.15, {}, true, {0.91, 0.91, 0.91}};
   RoleStyle label{{0, 0, 0}, 0.2, {}};
   RoleStyle hint{{0.1, 0.45, 0.15}, 0.2, {}};
-  RoleStyle regmark{{0, 0, 0}, 0.5, {}};  ///< 0.5 mm: the stroke Silhouette's optical sensor expects
+  RoleStyle regmark{{0, 0, 0}, 0.5, {}};         ///< 0.5 mm: the stroke Silhouette's optical sensor expects
+  RoleStyle piece{{0.25, 0.25, 0.25}, 0.2, {}};  ///< part letters: dark grey, readable under the lines
+  RoleStyle sheet{{0, 0, 0}, 0.25, {}};          ///< sheet number, scale check, legend
 
   /// The style of `role`.
   const RoleStyle& style(PathRole role) const;

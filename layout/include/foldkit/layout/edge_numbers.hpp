@@ -3,6 +3,7 @@
 // the piece along the edge, or on the tab when the side has one. Labels are sized to their edge
 // (never below a legible minimum), keep clear of outline and fold lines and of each other, and read
 // with their foot towards the edge they name.
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@
 namespace foldkit::layout {
 
 struct LabelOptions {
-  double min_mm = 1.8;  ///< smallest cap height
+  double min_mm = 2;    ///< smallest cap height
   double max_mm = 3.5;  ///< largest cap height
   /// Cap height as a fraction of the edge length before the limits apply.
   double per_length = 0.3;
@@ -49,11 +50,17 @@ struct Label {
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams);
 
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
-/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines.
+/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. `texts` (per
+/// seam and side, may be empty) is the longest text each side may print, e.g. "B 12 p3"; without it a
+/// side prints number_text of its number. Obstacles are looked up through grids, so the time grows
+/// with the number of seams, not its square. `taken` (per piece, may be empty) are convex areas
+/// already used (part letters) that labels keep clear of like other labels.
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
-                                std::span<const std::string> hints, const LabelOptions& options);
+                                std::span<const std::string> hints, const LabelOptions& options,
+                                std::span<const std::array<std::string, 2>> texts = {},
+                                std::span<const std::vector<Polygon>> taken = {});
 
 /// Length of `text` on the page at cap height `height_mm` under `options.char_width`.
 double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options);

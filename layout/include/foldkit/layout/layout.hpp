@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "foldkit/layout/folds.hpp"
+#include "foldkit/layout/label_audit.hpp"
 #include "foldkit/layout/regmarks.hpp"
 #include "foldkit/sheet/sheet.hpp"
 #include "foldkit/unfold/unfolding.hpp"
@@ -33,10 +34,11 @@ struct LayoutOptions {
   double min_tab_width_mm = 2;  ///< narrower than this a tab is useless: it moves or is dropped
 
   bool numbers = true;        ///< matching edge numbers
-  double label_min_mm = 1.8;  ///< smallest legible label (cap height)
+  double label_min_mm = 2;    ///< smallest legible label (cap height)
   double label_max_mm = 3.5;  ///< largest label
   bool arrows = false;        ///< coloured direction arrows per seam pair (seed Figure 1(c))
   bool hints = false;         ///< assembly step beside each number and an assembly-order list
+  bool piece_letters = true;  ///< each part's letter (A, B, …) inside it
 
   bool regmarks = false;  ///< Silhouette registration marks for print-and-cut
   RegMarkOptions regmark;
@@ -82,6 +84,17 @@ struct LayoutResult {
   std::vector<int> seam_number;
   /// Per piece of the unfolding, where it went.
   std::vector<PiecePlacement> placements;
+  /// Per piece of the unfolding, its letter (A, B, …; in glue order with hints).
+  std::vector<std::string> piece_letters;
+  /// The printed labels checked from the sheets' geometry (all sheets).
+  LabelAudit label_audit;
+  /// Seam labels that found no spot clear of every line and label (they cross a fold or touch).
+  int labels_without_room = 0;
+  /// When more than 2% of the labels have no room: how many times larger the model (or its faces)
+  /// must be for all but 2% to find a clear spot; 1 otherwise.
+  double label_room_factor = 1;
+  /// Numbers (as printed) of the seams that got no glue tab.
+  std::vector<int> dropped_tab_seams;
   double paper_height_mm = 0;
 
   /// A point of the flat net (model units) of `piece` in its sheet's coordinates (mm, y down).

@@ -8,7 +8,9 @@
 
 namespace foldkit {
 
-enum class PathRole { Cut, Mountain, Valley, Tab, Label, Hint, RegMark };
+/// Piece: the part letters printed inside each part. Sheet: what a sheet says about itself (its
+/// number, the model, the scale check, the line legend); cutters leave both alone.
+enum class PathRole { Cut, Mountain, Valley, Tab, Label, Hint, RegMark, Piece, Sheet };
 
 /// Lower-case name of a role ("cut", "mountain", …): SVG group ids, profile keys, JSON.
 inline const char* role_name(PathRole r) {
@@ -27,6 +29,10 @@ inline const char* role_name(PathRole r) {
       return "hint";
     case PathRole::RegMark:
       return "regmark";
+    case PathRole::Piece:
+      return "piece";
+    case PathRole::Sheet:
+      return "sheet";
   }
   return "?";
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/geom/colour.hpp"
 #include "foldkit/geom/vec.hpp"
 
 namespace foldkit::unfold {
@@ -19,6 +20,19 @@ struct MeshEdge {
   bool boundary() const { return face[1] < 0; }
 };
 
+/// What faces are printed with: a flat colour, times a texture image when there is one.
+struct Material {
+  std::string name;  ///< as the file names it (usemtl, glTF material), or made up from the colour
+  Colour colour;     ///< OBJ Kd, glTF baseColorFactor, PLY face colour
+  /// Image file (OBJ map_Kd resolved against the MTL's folder, glTF baseColorTexture); empty for none.
+  std::string texture;
+  /// The encoded image (PNG, JPEG) when the file embeds it (.glb, data: URIs); `texture` then names it.
+  std::vector<unsigned char> texture_data;
+  /// The image exists and its header reads; when false the faces print in `colour` alone.
+  bool texture_found = false;
+  int texture_width_px = 0, texture_height_px = 0;
+};
+
 /// A consistently oriented, edge- and vertex-manifold triangle mesh (validated by `make_mesh`).
 struct Mesh {
   std::vector<Vec3> vertices;
@@ -27,6 +41,12 @@ struct Mesh {
   std::vector<MeshEdge> edges;
   /// face_edges[f][i] is the edge faces[f][i] -> faces[f][(i+1)%3].
   std::vector<std::array<int, 3>> face_edges;
+  /// Per face, the texture coordinates of its three corners (u right, v up, image is [0,1]^2); empty
+  /// when the file has none.
+  std::vector<std::array<Vec2, 3>> face_uv;
+  /// Per face, an index into `materials` (-1: none, printed white); empty when the file has no colours.
+  std::vector<int> face_material;
+  std::vector<Material> materials;
   /// Where the mesh came from (file name), for messages.
   std::string name;
 

@@ -1,0 +1,65 @@
+#include "foldkit/layout/label_text.hpp"
+
+#include <algorithm>
+
+namespace foldkit::layout {
+
+bool reads_as_other_number_turned(int number) {
+  if (number < 0) return false;
+  const std::string digits = std::to_string(number);
+  std::string turned;
+  for (auto it = digits.rbegin(); it != digits.rend(); ++it) {
+    switch (*it) {
+      case '0':
+      case '1':
+      case '8':
+        turned.push_back(*it);
+        break;
+      case '6':
+        turned.push_back('9');
+        break;
+      case '9':
+        turned.push_back('6');
+        break;
+      default:
+        return false;  // 2 3 4 5 7 turned are no digits: the number reads as nothing else
+    }
+  }
+  return turned != digits && turned.front() != '0';
+}
+
+std::string number_text(int number) {
+  std::string text = std::to_string(number);
+  if (reads_as_other_number_turned(number)) text.push_back('.');
+  return text;
+}
+
+std::string piece_letter(int index) {
+  std::string letters;
+  for (int n = index + 1; n > 0; n = (n - 1) / 26)
+    letters.push_back(static_cast<char>('A' + (n - 1) % 26));
+  std::reverse(letters.begin(), letters.end());
+  return letters;
+}
+
+std::string seam_label_text(int number, const std::string& mate_letter, int mate_sheet) {
+  std::string text = number_text(number);
+  if (mate_letter.empty()) return text;
+  text.insert(0, mate_letter + " ");
+  if (mate_sheet > 0) text.append(" p").append(std::to_string(mate_sheet));
+  return text;
+}
+
+int seam_number_in(const std::string& text) {
+  // The number is the first word that starts with a digit (the mate's letter comes before it).
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] < '0' || text[i] > '9' || (i > 0 && text[i - 1] != ' ' && text[i - 1] != '(')) continue;
+    int n = 0;
+    for (std::size_t j = i; j < text.size() && text[j] >= '0' && text[j] <= '9' && n < 100000000; ++j)
+      n = 10 * n + (text[j] - '0');
+    return n;
+  }
+  return 0;
+}
+
+}  // namespace foldkit::layout

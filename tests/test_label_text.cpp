@@ -1,0 +1,50 @@
+// Label texts: numbers that cannot be misread turned, part letters, mate labels.
+#include <gtest/gtest.h>
+
+#include "foldkit/layout/label_text.hpp"
+
+using namespace foldkit::layout;
+
+TEST(LabelText, NumbersThatReadAsAnotherNumberTurnedAreRecognised) {
+  for (int n : {6, 9, 16, 18, 19, 61, 66, 68, 81, 86, 89, 91, 98, 99, 106, 109, 168, 1006})
+    EXPECT_TRUE(reads_as_other_number_turned(n)) << n;
+  // Read the same turned (0, 1, 8, 11, 69, 88, 96, 101, 609), turn into no number (10, 60, 100: a
+  // leading zero), or contain a digit that turns into no digit.
+  for (int n : {0, 1, 8, 11, 69, 88, 96, 101, 609, 10, 60, 100, 2, 12, 26, 67, 97, 123})
+    EXPECT_FALSE(reads_as_other_number_turned(n)) << n;
+}
+
+TEST(LabelText, AmbiguousNumbersArePrintedWithATrailingPeriod) {
+  EXPECT_EQ(number_text(6), "6.");
+  EXPECT_EQ(number_text(9), "9.");
+  EXPECT_EQ(number_text(86), "86.");
+  EXPECT_EQ(number_text(69), "69");
+  EXPECT_EQ(number_text(12), "12");
+}
+
+TEST(LabelText, PartLettersRunLikeSpreadsheetColumns) {
+  EXPECT_EQ(piece_letter(0), "A");
+  EXPECT_EQ(piece_letter(25), "Z");
+  EXPECT_EQ(piece_letter(26), "AA");
+  EXPECT_EQ(piece_letter(27), "AB");
+  EXPECT_EQ(piece_letter(51), "AZ");
+  EXPECT_EQ(piece_letter(52), "BA");
+  EXPECT_EQ(piece_letter(701), "ZZ");
+  EXPECT_EQ(piece_letter(702), "AAA");
+}
+
+TEST(LabelText, ASeamLabelNamesItsMatesPartAndSheetOnlyWhenThoseDiffer) {
+  EXPECT_EQ(seam_label_text(12, "", 0), "12");
+  EXPECT_EQ(seam_label_text(12, "B", 0), "B 12");
+  EXPECT_EQ(seam_label_text(12, "B", 3), "B 12 p3");
+  EXPECT_EQ(seam_label_text(9, "AA", 11), "AA 9. p11");
+}
+
+TEST(LabelText, TheSeamNumberIsReadBackFromAnyLabelForm) {
+  EXPECT_EQ(seam_number_in("12"), 12);
+  EXPECT_EQ(seam_number_in("9."), 9);
+  EXPECT_EQ(seam_number_in("B 12 p3"), 12);
+  EXPECT_EQ(seam_number_in("AA 16. p11"), 16);
+  EXPECT_EQ(seam_number_in("(7)"), 7);
+  EXPECT_EQ(seam_number_in("A"), 0);
+}
