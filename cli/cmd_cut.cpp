@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,7 @@
 #include "foldkit/error.hpp"
 #include "interrupt.hpp"
 #include "layout_options.hpp"
+#include "limits.hpp"
 #include "output_paths.hpp"
 #include "pipeline.hpp"
 #include "profile_options.hpp"
@@ -151,9 +153,8 @@ void setup_cut(CLI::App& app) {
   cmd->add_option("--fold-method", args->fold_method,
                   "How folds are marked: scorer, reduced-force, perforate, none (default: profile and media)")
       ->check(CLI::IsMember({"scorer", "reduced-force", "perforate", "none"}));
-  cmd->add_option("--overcut", args->overcut_mm, "Closed cuts continue this far past their start, mm")
-      ->check(CLI::Range(0.0, 10.0))
-      ->capture_default_str();
+  add_length_option(*cmd, "--overcut", args->overcut_mm, "Closed cuts continue this far past their start",
+                    kOvercut);
   cmd->add_option("--sheet", args->sheet, "Only this sheet (1-based); default all")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--ready-timeout", args->ready_timeout_s,
@@ -168,7 +169,7 @@ void setup_cut(CLI::App& app) {
   add_layout_options(*cmd, args->layout);
   add_unfold_options(*cmd, args->unfold);
 
-  cmd->callback([args] {
+  cmd->callback([args, cmd] {
     const devices::SimFaults faults = parse_faults(args->sim_faults);
     const devices::ProfileSet profiles = load_cli_profiles(args->profiles);
     const bool simulated = args->dry_run || (args->device.empty() && args->output.empty());
@@ -221,6 +222,19 @@ void setup_cut(CLI::App& app) {
 
     finish_unfold_options(args->unfold);
     layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    // The marks printed are the marks the device is told to look for: the profile's geometry, unless
+    // the command line gives one (which the device is then told too).
+    layout::RegMarkOptions& marks = layout_options.regmark;
+    devices::RegMarkSetup& device_marks = device.regmarks;
+    for (auto [option, printed, profiled] :
+         {std::tuple{"--regmark-square", &marks.square_mm, &device_marks.square_mm},
+          std::tuple{"--regmark-arm", &marks.arm_mm, &device_marks.arm_length_mm},
+          std::tuple{"--regmark-inset", &marks.inset_mm, &device_marks.inset_mm}})
+      if (cmd->count(option) > 0)
+        *profiled = *printed;
+      else
+        *printed = *profiled;
+    marks.stroke_mm = device_marks.stroke_mm;
     ProgressLine line(!args->quiet && !args->json);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const std::vector<Sheet>& sheets = run.layout.sheets;

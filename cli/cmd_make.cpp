@@ -16,6 +16,7 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
+#include "limits.hpp"
 #include "output_paths.hpp"
 #include "pipeline.hpp"
 
@@ -141,6 +142,10 @@ void setup_make(CLI::App& app) {
     refuse_output_over_inputs("-o", args->output, inputs);
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    std::string ext = std::filesystem::path(args->output).extension().string();
+    for (char& c : ext)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const layout::LayoutResult& r = run.layout;

@@ -1,28 +1,25 @@
 #include "layout_options.hpp"
 
 #include "foldkit/layout/paper.hpp"
+#include "limits.hpp"
 
 namespace foldkit::cli {
 
 void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
-  auto length = [](const std::string& text) -> std::string {
-    return layout::parse_length_mm(text) ? "" : "expected a positive length such as 150mm, 15cm or 6in";
-  };
-  auto paper = [](const std::string& text) -> std::string {
-    return layout::parse_paper(text) ? "" : "unknown paper '" + text + "': use " + layout::paper_names();
-  };
-  auto* size =
-      cmd.add_option("--size", o.size, "Largest model dimension on paper, e.g. 150mm (default: --fit)")
-          ->check(length);
+  // --size stays text until to_layout_options: --fit excludes it and its absence means --fit.
+  auto* size = cmd.add_option("--size", o.size,
+                              "Largest model dimension on paper, e.g. 150mm (default: --fit; " +
+                                  format_length_mm(kModelSize.min_mm) + " to " +
+                                  format_length_mm(kModelSize.max_mm) + ")")
+                   ->transform(length_in(kModelSize));
   cmd.add_flag("--fit", o.fit, "Largest size at which the model fits on one sheet")->excludes(size);
-  cmd.add_option("--paper", o.paper, "Paper: " + layout::paper_names())->check(paper)->capture_default_str();
+  cmd.add_option("--paper", o.paper, "Paper: " + layout::paper_names())
+      ->check(paper_in(kSheetSide))
+      ->capture_default_str();
   cmd.add_flag("--landscape", o.landscape, "Landscape sheets (default portrait)");
-  cmd.add_option("--margin", o.margin_mm, "Margin around the printable area, mm")
-      ->check(CLI::Range(0.0, 200.0))
-      ->capture_default_str();
-  cmd.add_option("--tab-width", o.tab_width_mm, "Glue tab width, mm (narrower on short edges)")
-      ->check(CLI::Range(0.5, 50.0))
-      ->capture_default_str();
+  add_length_option(cmd, "--margin", o.margin_mm, "Margin around the printable area", kMargin);
+  add_length_option(cmd, "--tab-width", o.tab_width_mm, "Glue tab width (narrower on short edges)",
+                    kTabWidth);
   cmd.add_flag("--no-tabs", o.no_tabs, "No glue tabs");
   cmd.add_flag("--no-split", o.no_split,
                "Keep every piece whole: a piece larger than the paper is an error naming the largest --size "
@@ -31,21 +28,12 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
   cmd.add_flag("--arrows", o.arrows, "Coloured direction arrows on both sides of each seam");
   cmd.add_flag("--hints", o.hints, "Assembly step beside each edge number and a glue-order list");
   cmd.add_flag("--regmarks", o.regmarks, "Silhouette registration marks for print-and-cut");
-  cmd.add_option("--regmark-inset", o.regmark_inset_mm, "Distance of the marks from the paper edges, mm")
-      ->check(CLI::Range(0.0, 100.0))
-      ->capture_default_str();
-  cmd.add_option("--regmark-square", o.regmark_square_mm, "Side of the square mark, mm")
-      ->check(CLI::Range(1.0, 50.0))
-      ->capture_default_str();
-  cmd.add_option("--regmark-arm", o.regmark_arm_mm, "Arm length of the L marks, mm")
-      ->check(CLI::Range(1.0, 100.0))
-      ->capture_default_str();
-  cmd.add_option("--spacing", o.spacing_mm, "Least gap between pieces, mm")
-      ->check(CLI::Range(0.0, 50.0))
-      ->capture_default_str();
-  cmd.add_option("--label-min", o.label_min_mm, "Smallest cap height of edge numbers, mm")
-      ->check(CLI::Range(0.5, 3.5))
-      ->capture_default_str();
+  add_length_option(cmd, "--regmark-inset", o.regmark_inset_mm, "Distance of the marks from the paper edges",
+                    kRegMarkInset);
+  add_length_option(cmd, "--regmark-square", o.regmark_square_mm, "Side of the square mark", kRegMarkSquare);
+  add_length_option(cmd, "--regmark-arm", o.regmark_arm_mm, "Arm length of the L marks", kRegMarkArm);
+  add_length_option(cmd, "--spacing", o.spacing_mm, "Least gap between pieces", kSpacing);
+  add_length_option(cmd, "--label-min", o.label_min_mm, "Smallest cap height of edge numbers", kLabelMin);
 }
 
 layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {

@@ -10,7 +10,7 @@
 namespace foldkit::cli {
 
 struct LayoutCliOptions {
-  std::string size;  ///< "150mm", "6in", … (empty: --fit)
+  std::string size;  ///< millimetres as text once parsed ("6in" becomes "152.4"); empty: --fit
   bool fit = false;
   std::string paper = "A4";
   bool landscape = false;
@@ -30,8 +30,8 @@ struct LayoutCliOptions {
 };
 
 /// Adds --size, --fit, --paper, --landscape, --margin, --tab-width, --no-tabs, --no-numbers, --arrows,
-/// --hints, --regmarks (with --regmark-inset/-square/-arm) and --spacing to `cmd`. Malformed values
-/// (unknown paper, non-positive size) are usage errors at parse time.
+/// --hints, --regmarks (with --regmark-inset/-square/-arm) and --spacing to `cmd`. Every length takes
+/// units (length_option.hpp) within the bounds of limits.hpp; anything else is a usage error at parse time.
 void add_layout_options(CLI::App& cmd, LayoutCliOptions& options);
 
 /// The library options for the parsed command line.

@@ -4,13 +4,16 @@
 #include <utility>
 
 #include "foldkit/layout/split.hpp"
+#include "limits.hpp"
 
 namespace foldkit::cli {
 
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line) {
   PipelineRun run;
-  run.unfolded = load_and_unfold(mesh_file, unfold_options, line);
+  run.unfolded = load_and_unfold(mesh_file, unfold_options, line, [&](const unfold::LoadedMesh& loaded) {
+    check_sheet_budget(loaded.mesh, layout_options);
+  });
   line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
   const auto start = std::chrono::steady_clock::now();
   // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts

@@ -44,10 +44,12 @@ void finish_unfold_options(UnfoldCliOptions& o) {
   if (!o.keep_file.empty()) o.unfold.seams.forbid_cut = unfold::read_edge_list(o.keep_file);
 }
 
-UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line) {
+UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line,
+                          const std::function<void(const unfold::LoadedMesh&)>& check_loaded) {
   UnfoldRun run;
   line.update("loading " + mesh_file);
   run.loaded = unfold::load_mesh(mesh_file, options.load);
+  if (check_loaded) check_loaded(run.loaded);
   auto report = [&line](const unfold::UnfoldProgress& p) {
     char text[160];
     std::snprintf(text, sizeof text, "unfolding: %s, step %d, %d piece%s, %.1f s", p.stage.c_str(),

@@ -1,6 +1,7 @@
 #pragma once
 // The options every command that unfolds shares (unfold, make, cut, bench): loading (--max-faces),
 // the method and its parameters, and the user's seams (--cut/--keep).
+#include <functional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -31,6 +32,8 @@ struct UnfoldRun {
   unfold::LoadedMesh loaded;
   unfold::UnfoldResult result;
 };
-UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line);
+/// `check_loaded` runs between loading and unfolding (e.g. to refuse a size before any work).
+UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line,
+                          const std::function<void(const unfold::LoadedMesh&)>& check_loaded = {});
 
 }  // namespace foldkit::cli

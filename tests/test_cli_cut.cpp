@@ -201,3 +201,16 @@ TEST(CliCut, StopsCleanlyOnCtrlC) {
 }
 
 }  // namespace
+
+TEST(CliCut, TheRegistrationMarksPrintedAreTheOnesTheDeviceIsToldToFind) {
+  // The profile's mark geometry lays out the marks; a --regmark-arm given on the command line is told to
+  // the device too (TB51 in device units, 20 per mm on a Cameo), so the two never disagree.
+  const auto dir = foldkit::test::temp_dir("cli-regmarks");
+  CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "-o", "job.gpgl", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(slurp(dir / "job.gpgl").find("TB51,400"), std::string::npos);
+  r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "--regmark-arm", "30", "-o",
+                        "job.gpgl", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(slurp(dir / "job.gpgl").find("TB51,600"), std::string::npos);
+}

@@ -161,10 +161,10 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
   };
   const std::vector<Case> cases = {
       {{"make", mesh, "-o", out, "--paper", "B7"}, 2, "unknown paper"},
-      {{"make", mesh, "-o", out, "--size", "-3mm"}, 2, "positive length"},
-      {{"make", mesh, "-o", out, "--size", "12parsecs"}, 2, "positive length"},
+      {{"make", mesh, "-o", out, "--size", "-3mm"}, 2, "must be between 1 mm and 10000 mm"},
+      {{"make", mesh, "-o", out, "--size", "12parsecs"}, 2, "expected a length such as 5mm"},
       {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg or .png"},
-      {{"make", mesh, "-o", out, "--size", "5m"}, 2, "positive length"},
+      {{"make", mesh, "-o", out, "--size", "5m"}, 2, "expected a length such as 5mm"},
       {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
       {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, "largest --size that fits"},
       {{"make", (dir / "missing.obj").string(), "-o", out}, 3, "missing.obj"},
@@ -177,4 +177,71 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
     EXPECT_LE(count_lines(run.err), 2u) << run.err;
   }
   EXPECT_FALSE(fs::exists(out)) << "no output file after an error";
+}
+
+TEST(CliMake, EveryLengthTakesUnits) {
+  const fs::path dir = test::temp_dir("make-units");
+  const auto run = test::run_foldkit({"make", test::example_mesh("spot_128.obj").string(), "-o",
+                                      (dir / "x.svg").string(), "-q", "--json", "--margin", "1cm",
+                                      "--tab-width", "0.2in", "--spacing", "2mm", "--size", "10cm"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_NEAR(report["size_mm"].get<double>(), 100, 1e-9);
+}
+
+TEST(CliMake, OutOfRangeLengthsAreRefusedWithReadableBoundsBeforeAnyWork) {
+  // Each of these took gigabytes or ended in "internal error" (issue 10): --size 1e9mm was killed at
+  // 24 GB, 100000mm took 3.4 GB before its refusal, 1e300mm and a 1e9 mm paper overflowed the packer.
+  const fs::path dir = test::temp_dir("make-range");
+  const std::string mesh = test::example_mesh("spot_128.obj").string();
+  const std::string out = (dir / "x.pdf").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"--size", "1e9mm"}, "--size: '1e9mm': must be between 1 mm and 10000 mm"},
+      {{"--size", "100000mm"}, "must be between 1 mm and 10000 mm"},
+      {{"--size", "1e300mm"}, "must be between 1 mm and 10000 mm"},
+      {{"--size", "1e9mm", "--no-split"}, "must be between 1 mm and 10000 mm"},
+      {{"--paper", "1e9x1e9mm"}, "--paper: '1e9x1e9mm': each side must be between 10 mm and 3000 mm"},
+      {{"--margin", "1e300mm"}, "--margin: '1e300mm': must be between 0 mm and 200 mm"},
+      {{"--tab-width", "2in"}, "--tab-width: '2in': must be between 0.5 mm and 50 mm"},
+      {{"--spacing", "-1cm"}, "must be between 0 mm and 50 mm"},
+      {{"--regmark-arm", "1e300"}, "--regmark-arm: '1e300': must be between 1 mm and 100 mm"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"make", mesh, "-o", out};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const auto run = test::run_foldkit(args);
+    EXPECT_EQ(run.exit_code, 2) << c.args.front() << ": " << run.err;
+    EXPECT_NE(run.err.find(c.says), std::string::npos) << run.err;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_LT(run.err.size(), 200u) << "no 309-digit numbers: " << run.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliMake, APngTooLargeForMemoryIsRefusedBeforeThePipelineRuns) {
+  // --dpi 2400 on A3 is 28063x39685 pixels (4.5 GB): it was refused only after 63 s of work.
+  const fs::path dir = test::temp_dir("make-dpi");
+  const auto run = test::run_foldkit({"make", test::example_mesh("spot_128.obj").string(), "-o",
+                                      (dir / "x.png").string(), "--paper", "A3", "--dpi", "2400"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--dpi 2400: a 297x420 mm sheet is 28063x39685 pixels"), std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("--dpi 880 at most"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("loading"), std::string::npos) << "refused before loading the mesh: " << run.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST(CliMake, ASizeNeedingHundredsOfSheetsIsRefusedBeforeUnfolding) {
+  const fs::path dir = test::temp_dir("make-budget");
+  const auto run = test::run_foldkit({"make", test::example_mesh("spot_128.obj").string(), "-o",
+                                      (dir / "x.pdf").string(), "--size", "9000mm", "-q"});
+  EXPECT_EQ(run.exit_code, 5) << run.err;
+  EXPECT_NE(run.err.find("over the limit of 500; the largest --size that fits 500 sheets is"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
 }

@@ -183,5 +183,25 @@ TEST(Profile, MediaSettingsBecomeClampedDeviceSteps) {
   EXPECT_EQ(force_step(d, 1000), 33);
 }
 
+TEST(Profile, RegistrationMarkLengthsAreBoundedLikeTheirOptions) {
+  // 1e300 used to reach the device as TB51,-9223372036854775808, and --dry-run passed it (issue 10).
+  const fs::path hostile = test::source_dir() / "tests" / "data" / "hostile";
+  const fs::path arm = hostile / "device_regmark_arm_1e300.toml";
+  const fs::path stroke = hostile / "device_regmark_stroke_1e300.toml";
+  ASSERT_TRUE(fs::is_regular_file(arm) && fs::is_regular_file(stroke));
+  EXPECT_EQ(load_error(arm),
+            arm.string() + ": regmarks.arm_length_mm: must be between 1 and 100, got 1e+300");
+  EXPECT_EQ(load_error(stroke),
+            stroke.string() + ": regmarks.stroke_mm: must be between 0.05 and 5, got 1e+300");
+  const auto square = edited("square.toml", "search = \"TB123\"\n", "search = \"TB123\"\nsquare_mm = 0.2\n");
+  EXPECT_NE(load_error(square).find("regmarks.square_mm: must be between 1 and 50, got 0.2"),
+            std::string::npos)
+      << load_error(square);
+  const auto inset = edited("inset.toml", "search = \"TB123\"\n", "search = \"TB123\"\ninset_mm = 500\n");
+  EXPECT_NE(load_error(inset).find("regmarks.inset_mm: must be between 0 and 100, got 500"),
+            std::string::npos)
+      << load_error(inset);
+}
+
 }  // namespace
 }  // namespace foldkit::devices

@@ -74,3 +74,23 @@ TEST(Seams, ImpossibleSeamsAreUsageErrors) {
   out_of_range.forbid_cut.push_back({1, 1'000'000});
   EXPECT_THROW(resolve_seams(mesh, out_of_range), Error);
 }
+
+TEST(Seams, AnEdgeListMustBeARegularFileOfBoundedSize) {
+  // `--cut /dev/zero` grew memory at about 1 GB per 3 s (issue 10).
+  try {
+    read_edge_list("/dev/zero");
+    FAIL() << "read /dev/zero";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/zero: not a regular file");
+  }
+  const auto big = test::temp_dir("seams") / "big.txt";
+  std::ofstream(big) << "# sparse\n";
+  std::filesystem::resize_file(big, std::uintmax_t{65} << 20);
+  try {
+    read_edge_list(big);
+    FAIL() << "read a 65 MB edge list";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("over the limit of 67108864 bytes"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(big);
+}

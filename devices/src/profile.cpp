@@ -56,6 +56,11 @@ constexpr double kMaxForceGf = 100'000;    // 100 kgf; real cutters reach about 
 constexpr double kMaxThicknessMm = 10;     // thicker than any card a drag knife cuts
 constexpr double kMinPerforationMm = 0.1;  // a dash or gap shorter than this is not a dash
 constexpr double kMaxPerforationMm = 1000;
+// Registration marks: the ranges of the --regmark-* options; Silhouette's own marks are 5, 20, 0.5, 10.
+constexpr double kMinRegMarkSquareMm = 1, kMaxRegMarkSquareMm = 50;
+constexpr double kMinRegMarkArmMm = 1, kMaxRegMarkArmMm = 100;
+constexpr double kMinRegMarkStrokeMm = 0.05, kMaxRegMarkStrokeMm = 5;
+constexpr double kMaxRegMarkInsetMm = 100;
 
 // Reads one TOML table, remembering which keys were asked for so that leftovers (typos, keys from
 // another version) are reported instead of ignored.
@@ -314,10 +319,13 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.regmarks.supported = reg.boolean("supported", false);
   d.regmarks.search = reg.choice<std::string>("search", {{"TB123", "TB123"}, {"TB124", "TB124"}}, "TB123");
   d.regmarks.mark_type = static_cast<int>(reg.integer("mark_type", 0, 9, 2));
-  d.regmarks.square_mm = reg.positive("square_mm", 5.0);
-  d.regmarks.arm_length_mm = reg.positive("arm_length_mm", 20.0);
-  d.regmarks.stroke_mm = reg.positive("stroke_mm", 0.5);
-  d.regmarks.inset_mm = reg.non_negative("inset_mm", 10.0);
+  // The marks' geometry is printed by the layout (cut takes it from here) and the arm length is sent
+  // to the device (TB51): bounded like the --regmark-* options, so 1e300 fails here, not as an
+  // overflowing device coordinate.
+  d.regmarks.square_mm = reg.between("square_mm", kMinRegMarkSquareMm, kMaxRegMarkSquareMm, 5.0);
+  d.regmarks.arm_length_mm = reg.between("arm_length_mm", kMinRegMarkArmMm, kMaxRegMarkArmMm, 20.0);
+  d.regmarks.stroke_mm = reg.between("stroke_mm", kMinRegMarkStrokeMm, kMaxRegMarkStrokeMm, 0.5);
+  d.regmarks.inset_mm = reg.between("inset_mm", 0.0, kMaxRegMarkInsetMm, 10.0);
   reg.finish();
 
   Reader hpgl = root.table("hpgl", true);

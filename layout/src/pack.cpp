@@ -3,14 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <tuple>
 #include <utility>
+
+#include "foldkit/error.hpp"
 
 namespace foldkit::layout {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// 5 bytes a cell per open sheet: a 3 m x 3 m sheet in 0.5 mm cells is 36 million.
+constexpr double kMaxGridCells = 64e6;
 
 // An item at one rotation, as runs of cells per row relative to its raster origin.
 struct Raster {
@@ -32,7 +37,9 @@ std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
 
 // Marks every cell whose centre lies inside the shape grown by `grow`: with grow = spacing/2 plus half
 // a cell diagonal (plus the arc tolerance), that is every cell the shape grown by spacing/2 touches.
-Raster rasterize(std::span<const Polygon> shape, double angle, double grow, double cell) {
+// A shape larger than the grid (nx x ny cells) gets no cells and a size that fits nowhere: its cell
+// count would overflow an int, and its rows would be gigabytes, long before it could be placed.
+Raster rasterize(std::span<const Polygon> shape, double angle, double grow, double cell, int nx, int ny) {
   Raster r;
   r.angle_rad = angle;
   constexpr double kArcTolerance = 0.02;
@@ -41,6 +48,11 @@ Raster rasterize(std::span<const Polygon> shape, double angle, double grow, doub
   for (const Polygon& p : grown)
     box.add(bounds_of(p));
   if (box.empty()) return r;
+  if (!(box.width() / cell < nx && box.height() / cell < ny)) {
+    r.width = nx + 1;
+    r.height = ny + 1;
+    return r;
+  }
   r.origin = box.min;
   r.width = static_cast<int>(std::ceil(box.width() / cell)) + 1;
   r.height = static_cast<int>(std::ceil(box.height() / cell)) + 1;
@@ -222,8 +234,18 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   const double half_gap = 0.5 * options.spacing_mm;
   // The grid reaches half a gap beyond the area: an item's grown shape may use it, the item may not.
   const Vec2 grid_min = options.area_mm.min - Vec2{half_gap, half_gap};
-  const int nx = std::max(0, static_cast<int>(std::floor((options.area_mm.width() + 2 * half_gap) / cell)));
-  const int ny = std::max(0, static_cast<int>(std::floor((options.area_mm.height() + 2 * half_gap) / cell)));
+  const double cells_x = std::floor((options.area_mm.width() + 2 * half_gap) / cell);
+  const double cells_y = std::floor((options.area_mm.height() + 2 * half_gap) / cell);
+  // Checked in floating point, before any cast or allocation (a 1e9 mm sheet was a 4e18-byte grid).
+  if (!(cells_x * cells_y <= kMaxGridCells)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "the sheet is too large to pack: %gx%g mm in %g mm cells is over %g cells",
+                  options.area_mm.width(), options.area_mm.height(), cell, kMaxGridCells);
+    throw LayoutError(text);
+  }
+  const int nx = std::max(0, static_cast<int>(cells_x));
+  const int ny = std::max(0, static_cast<int>(cells_y));
   const double grow = half_gap + cell * std::sqrt(0.5);
 
   SheetGrid empty(nx, ny);
@@ -240,7 +262,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   std::vector<double> area(items.size()), longest(items.size()), girth(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
     for (double angle : candidate_angles(items[i], options.rotations))
-      rasters[i].push_back(rasterize(items[i].shape_mm, angle, grow, cell));
+      rasters[i].push_back(rasterize(items[i].shape_mm, angle, grow, cell, nx, ny));
     area[i] = std::fabs(total_area(items[i].shape_mm));
     Box2 box;
     for (const Polygon& p : items[i].shape_mm)

@@ -23,6 +23,16 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+// Removes a trailing unit (mm, cm, in) from `text` and returns its size in mm; no unit is mm.
+double take_unit(std::string_view& text) {
+  if (text.size() <= 2) return 1;
+  const std::string_view unit = text.substr(text.size() - 2);
+  const double unit_mm = unit == "mm" ? 1 : unit == "cm" ? 10 : unit == "in" ? 25.4 : 0;
+  if (unit_mm == 0) return 1;
+  text.remove_suffix(2);
+  return unit_mm;
+}
+
 }  // namespace
 
 const std::vector<PaperPreset>& paper_presets() {
@@ -40,19 +50,7 @@ std::optional<Vec2> parse_paper(std::string_view text) {
   if (name == "12x12" || name == "12x12in" || name == "mat") return Vec2{304.8, 304.8};
 
   std::string_view rest = name;
-  double unit_mm = 1;
-  auto ends_with = [&rest](std::string_view suffix) {
-    return rest.size() > suffix.size() && rest.substr(rest.size() - suffix.size()) == suffix;
-  };
-  if (ends_with("mm")) {
-    rest.remove_suffix(2);
-  } else if (ends_with("cm")) {
-    rest.remove_suffix(2);
-    unit_mm = 10;
-  } else if (ends_with("in")) {
-    rest.remove_suffix(2);
-    unit_mm = 25.4;
-  }
+  const double unit_mm = take_unit(rest);
   auto x = rest.find('x');
   if (x == std::string_view::npos) return std::nullopt;
   auto w = parse_number(rest.substr(0, x));
@@ -63,20 +61,19 @@ std::optional<Vec2> parse_paper(std::string_view text) {
   return size;
 }
 
-std::optional<double> parse_length_mm(std::string_view text) {
+std::optional<double> parse_non_negative_length_mm(std::string_view text) {
   const std::string s = lower(text);
   std::string_view rest = s;
-  double unit_mm = 1;
-  if (rest.size() > 2) {
-    const std::string_view unit = rest.substr(rest.size() - 2);
-    if (unit == "mm" || unit == "cm" || unit == "in") {
-      unit_mm = unit == "mm" ? 1 : unit == "cm" ? 10 : 25.4;
-      rest.remove_suffix(2);
-    }
-  }
+  const double unit_mm = take_unit(rest);
   auto value = parse_number(rest);
-  if (!value || !(*value > 0) || !std::isfinite(*value * unit_mm)) return std::nullopt;
+  if (!value || !(*value >= 0) || !std::isfinite(*value * unit_mm)) return std::nullopt;
   return *value * unit_mm;
+}
+
+std::optional<double> parse_length_mm(std::string_view text) {
+  const auto mm = parse_non_negative_length_mm(text);
+  if (!mm || !(*mm > 0)) return std::nullopt;
+  return mm;
 }
 
 Vec2 oriented(Vec2 size_mm, Orientation orientation) {

@@ -15,12 +15,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string_view>
 
 #include "face_colours.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/decimate.hpp"
+#include "mesh_io_ply_body.hpp"
 #include "mesh_io_soup.hpp"
 
 namespace foldkit::unfold {
@@ -155,6 +157,14 @@ std::string lower(std::string s) {
   return s;
 }
 
+// OpenMesh's readers hold coordinates as float: a number beyond float range fails its stream
+// extraction and leaves the vertex uninitialised, so such a file is refused before OpenMesh reads it.
+constexpr double kMaxCoordinate = std::numeric_limits<float>::max();
+
+bool in_coordinate_range(double x) {
+  return std::fabs(x) <= kMaxCoordinate;
+}
+
 std::string read_all(const fs::path& path, const std::string& name) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name, "cannot open the file");
@@ -214,6 +224,9 @@ void check_obj_text(const std::string& text, const std::string& name, int face_l
         if (!std::isfinite(x))
           throw InputError(name,
                            "vertex " + std::to_string(vertices) + " has a non-finite coordinate" + where());
+        if (!in_coordinate_range(x))
+          throw InputError(name, "vertex " + std::to_string(vertices) + ": coordinate out of range '" +
+                                     std::string(tok.substr(0, 32)) + "'" + where());
       }
     } else {
       int corners = 0;
@@ -285,6 +298,9 @@ void check_ascii_stl_text(const std::string& text, const std::string& name) {
           throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "' in ASCII STL");
         if (!std::isfinite(x))
           throw InputError(name, "vertex " + std::to_string(vertices) + " has a non-finite coordinate");
+        if (!in_coordinate_range(x))
+          throw InputError(name, "vertex " + std::to_string(vertices) + ": coordinate out of range '" +
+                                     tok.substr(0, 32) + "'");
       }
     }
   }
@@ -317,12 +333,16 @@ std::size_t check_ascii_vertex_block(const std::string& text, std::size_t pos, s
                                      const std::string& name, int exact_numbers = 0) {
   const char* p = text.c_str() + std::min(pos, text.size());
   const char* const end = text.c_str() + text.size();
+  std::size_t line_no = static_cast<std::size_t>(std::count(text.c_str(), p, '\n'));
   std::uint64_t v = 0;
   while (v < vertices && p < end) {
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
     if (!eol) eol = end;
     const char* q = p;
     p = eol + 1;
+    ++line_no;
+    const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
+    const std::string vertex = "vertex " + std::to_string(v + 1);
     int numbers = 0;
     while (q < eol) {
       while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
@@ -335,18 +355,17 @@ std::size_t check_ascii_vertex_block(const std::string& text, std::size_t pos, s
       char* stop = nullptr;
       const double x = std::strtod(tok.c_str(), &stop);
       if (stop != tok.c_str() + tok.size())
-        throw InputError(
-            name, "unparsable coordinate '" + tok.substr(0, 32) + "' of vertex " + std::to_string(v + 1));
-      if (!std::isfinite(x))
-        throw InputError(name, "vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
+        throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "' of " + vertex + where());
+      if (!std::isfinite(x)) throw InputError(name, vertex + " has a non-finite coordinate" + where());
+      if (!in_coordinate_range(x))
+        throw InputError(name, vertex + ": coordinate out of range '" + tok.substr(0, 32) + "'" + where());
       ++numbers;
     }
     if (numbers == 0) continue;  // blank or comment line
-    if (numbers < 3)
-      throw InputError(name, "vertex " + std::to_string(v + 1) + " has fewer than 3 coordinates");
+    if (numbers < 3) throw InputError(name, vertex + " has fewer than 3 coordinates" + where());
     if (exact_numbers > 0 && numbers != exact_numbers)
-      throw InputError(name, "vertex " + std::to_string(v + 1) + " has " + std::to_string(numbers) +
-                                 " values, the header declares " + std::to_string(exact_numbers));
+      throw InputError(name, vertex + " has " + std::to_string(numbers) + " values, the header declares " +
+                                 std::to_string(exact_numbers) + where());
     ++v;
   }
   if (v < vertices)
@@ -453,6 +472,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   std::istringstream in(text.substr(0, end));
   std::string line, format, element;
   std::uint64_t nv = 0, nf = 0;
+  std::vector<detail::PlyProperty> vertex_layout, face_layout;
   bool has_vertex = false, has_face = false, face_list = false;
   int xyz = 0, line_no = 0, vertex_properties = 0;
   std::getline(in, line);  // "ply"
@@ -493,10 +513,14 @@ void check_ply_header(const std::string& text, const std::string& name, int face
         if (element != "face" || face_list) throw InputError(name, "unsupported PLY list property" + where);
         if (w[4] != "vertex_indices" && w[4] != "vertex_index")
           throw InputError(name, "unsupported PLY face list '" + w[4].substr(0, 32) + "'" + where);
+        if (!detail::ply_integer_type(w[2]) || !detail::ply_integer_type(w[3]))
+          throw InputError(name, "PLY face list with a non-integer count or index type" + where);
         face_list = true;
+        face_layout.push_back({w[3], w[2], w[4]});
       } else if (w.size() == 3 && is_type(w[1])) {
         if (element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++xyz;
         if (element == "vertex") ++vertex_properties;
+        (element == "vertex" ? vertex_layout : face_layout).push_back({w[1], "", w[2]});
       } else {
         throw InputError(name, "unparsable PLY property line" + where);
       }
@@ -515,6 +539,10 @@ void check_ply_header(const std::string& text, const std::string& name, int face
     const std::size_t faces_at = check_ascii_vertex_block(
         text, body == std::string::npos ? text.size() : body + 1, nv, name, vertex_properties);
     check_ascii_faces(text, faces_at, nf, nv, name);
+  } else {
+    const std::size_t body = end + std::string("end_header").size() + (text[after] == '\r' ? 2 : 1);
+    detail::check_binary_ply_body(std::string_view(text).substr(body), format == "binary_big_endian",
+                                  vertex_layout, nv, face_layout, nf, kMaxCoordinate, name);
   }
 }
 

@@ -12,6 +12,9 @@
 namespace foldkit::unfold {
 namespace {
 
+// Every edge of a mesh at the face limit, one per line with a comment, fits many times over.
+constexpr std::uintmax_t kMaxEdgeListBytes = std::uintmax_t{64} << 20;
+
 std::string edge_name(const std::array<int, 2>& v) {
   return std::to_string(v[0]) + "-" + std::to_string(v[1]);
 }
@@ -19,6 +22,16 @@ std::string edge_name(const std::array<int, 2>& v) {
 }  // namespace
 
 std::vector<std::array<int, 2>> read_edge_list(const std::filesystem::path& path) {
+  // The same checks as a mesh file: `--cut /dev/zero` or a FIFO would otherwise be read for ever.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(path.string(), "no such file");
+  if (!std::filesystem::is_regular_file(status)) throw InputError(path.string(), "not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(path.string(), "cannot read the file size");
+  if (size > kMaxEdgeListBytes)
+    throw InputError(path.string(), "file is " + std::to_string(size) + " bytes, over the limit of " +
+                                        std::to_string(kMaxEdgeListBytes) + " bytes for an edge list");
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), "cannot open the edge list");
   std::vector<std::array<int, 2>> edges;

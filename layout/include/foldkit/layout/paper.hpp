@@ -33,6 +33,9 @@ Vec2 oriented(Vec2 size_mm, Orientation orientation);
 /// positive finite number with an optional unit.
 std::optional<double> parse_length_mm(std::string_view text);
 
+/// As parse_length_mm, but zero is a length too (a margin, a gap).
+std::optional<double> parse_non_negative_length_mm(std::string_view text);
+
 /// "A4, A3, …" for help texts and error messages.
 std::string paper_names();
 
