@@ -28,6 +28,7 @@
 #include "output_paths.hpp"
 #include "pipeline.hpp"
 #include "profile_options.hpp"
+#include "user_config.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -250,6 +251,8 @@ void setup_cut(CLI::App& app) {
     plan.draw_labels = args->labels;
     plan.font = font ? &*font : nullptr;
     plan.regmarks = layout_options.regmarks;
+    // Print-and-cut applies what `foldkit calibrate --offset` stored for this device.
+    if (plan.regmarks) plan.print_cut_offset_mm = stored_print_cut_offset_mm(device.id);
     plan.overcut_mm = args->overcut_mm;
     if (args->fold_method == "scorer") plan.fold_method = devices::FoldMethod::Scorer;
     if (args->fold_method == "reduced-force") plan.fold_method = devices::FoldMethod::ReducedForce;
@@ -283,6 +286,13 @@ void setup_cut(CLI::App& app) {
       rep.stats = job.stats;
       rep.bytes = stream.size();
       rep.notes = job.notes;
+      if (plan.print_cut_offset_mm != Vec2{0, 0}) {
+        char note[160];
+        std::snprintf(note, sizeof note,
+                      "cuts moved by %+.2f, %+.2f mm: the print-and-cut offset `foldkit calibrate` stored",
+                      plan.print_cut_offset_mm.x, plan.print_cut_offset_mm.y);
+        rep.notes.push_back(note);
+      }
 
       devices::SendOptions send;
       send.protocol = job.protocol;

@@ -13,6 +13,8 @@
 
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/devices/bundle.hpp"
+#include "foldkit/devices/dxf.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
@@ -27,6 +29,7 @@ struct MakeArgs {
   std::string mesh;
   std::string output;
   std::string format;
+  std::string bundle;
   double dpi = 150;
   bool json = false;
   bool quiet = false;
@@ -60,8 +63,9 @@ std::string output_format(const std::string& output, const std::string& format) 
   std::string ext = std::filesystem::path(output).extension().string();
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".pdf" || ext == ".svg" || ext == ".png") return ext.substr(1);
-  throw Error("-o " + output + ": output must end in .pdf, .svg or .png (or give --format)", ExitCode::Usage);
+  if (ext == ".pdf" || ext == ".svg" || ext == ".png" || ext == ".dxf") return ext.substr(1);
+  throw Error("-o " + output + ": output must end in .pdf, .svg, .png or .dxf (or give --format)",
+              ExitCode::Usage);
 }
 
 // Sheets an earlier, longer run left under the same name would be taken for part of this one.
@@ -73,6 +77,37 @@ std::string remove_stale_files(const std::string& output, std::size_t sheet_coun
                      " sheet file(s) of an earlier run: " + removed.front().string();
   if (removed.size() > 1) note += " ... " + removed.back().string();
   return note;
+}
+
+// DXF goes through its own writer (stroke-font labels, layers); everything else through Cairo.
+std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
+                                                const devices::RenderOptions& render) {
+  if (render.format != "dxf") return devices::render_sheets(sheets, output, render);
+  const devices::StrokeFont font = devices::load_stroke_font(devices::default_stroke_font_path());
+  return devices::write_dxf_sheets(sheets, output, {&font});
+}
+
+// The bundle's file stem: the mesh's name with only characters every cutting program and file system
+// takes in a name.
+std::string bundle_name(const std::string& mesh) {
+  std::string name = std::filesystem::path(mesh).stem().string();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  return name.empty() ? "model" : name;
+}
+
+std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const std::string& mesh,
+                                                const std::string& dir, const devices::RenderOptions& render,
+                                                double size_mm) {
+  const devices::StrokeFont font = devices::load_stroke_font(devices::default_stroke_font_path());
+  devices::BundleOptions options;
+  options.name = bundle_name(mesh);
+  options.render = render;
+  options.render.png_dpi = 300;  // print resolution, whatever --dpi says for previews
+  options.font = &font;
+  char scale[64];
+  std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
+  return devices::write_bundle(sheets, dir, options, {"model: " + mesh + " at " + scale});
 }
 
 // The parts in letter order: each part's letter, sheet (1-based) and faces.
@@ -109,15 +144,19 @@ std::string label_remedy(const layout::LayoutResult& r, int faces) {
 
 void setup_make(CLI::App& app) {
   auto args = std::make_shared<MakeArgs>();
-  CLI::App* cmd = app.add_subcommand("make", "Unfold a mesh and lay it out on sheets: PDF, SVG or PNG");
+  CLI::App* cmd = app.add_subcommand(
+      "make", "Unfold a mesh and lay it out on sheets: PDF, SVG, PNG, DXF or a hand-off bundle");
   cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", args->output,
-                  "Output file: .pdf (one page per sheet), .svg or .png (one file per sheet); - for "
-                  "standard output")
-      ->required();
+                  "Output file: .pdf (one page per sheet), .svg, .png or .dxf (one file per sheet); - for "
+                  "standard output");
   cmd->add_option("--format", args->format,
                   "Output format when -o has no such extension (default for -: pdf)")
-      ->check(CLI::IsMember({"pdf", "svg", "png"}));
+      ->check(CLI::IsMember({"pdf", "svg", "png", "dxf"}));
+  cmd->add_option(
+      "--bundle", args->bundle,
+      "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
+      "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, README.txt");
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
       ->check(CLI::Range(10.0, 2400.0))
       ->capture_default_str();
@@ -133,7 +172,9 @@ void setup_make(CLI::App& app) {
   add_layout_options(*cmd, args->layout);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
-    const std::string format = output_format(args->output, args->format);
+    if (args->output.empty() && args->bundle.empty())
+      throw Error("make needs -o FILE or --bundle DIR (or both)", ExitCode::Usage);
+    const std::string format = args->output.empty() ? "" : output_format(args->output, args->format);
     const bool to_stdout = args->output == "-";
     if (to_stdout && args->json)
       throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
@@ -142,10 +183,7 @@ void setup_make(CLI::App& app) {
     refuse_output_over_inputs("-o", args->output, inputs);
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
-    std::string ext = std::filesystem::path(args->output).extension().string();
-    for (char& c : ext)
-      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
+    if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
     const layout::LayoutResult& r = run.layout;
@@ -160,9 +198,17 @@ void setup_make(CLI::App& app) {
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
-    const auto files = devices::render_sheets(r.sheets, args->output, render);
+    std::vector<std::filesystem::path> files;
+    if (!args->output.empty()) files = write_sheets(r.sheets, args->output, render);
+    const std::size_t sheet_files = files.size();
+    if (!args->bundle.empty()) {
+      line.update("writing the bundle");
+      const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm);
+      files.insert(files.end(), bundled.begin(), bundled.end());
+    }
     line.clear();
-    const std::string stale = format == "pdf" ? "" : remove_stale_files(args->output, files.size());
+    const std::string stale =
+        format == "pdf" || format.empty() ? "" : remove_stale_files(args->output, sheet_files);
 
     const unfold::Unfolding& u = run.unfolded.result.unfolding;
     std::vector<std::string> notes = run.unfolded.loaded.notes;
@@ -209,6 +255,9 @@ void setup_make(CLI::App& app) {
     }
     for (const auto& n : notes)
       std::cerr << "note: " << n << "\n";
+    // With only --bundle, its README.txt (which lists the rest) stands for the files written.
+    const std::string shown =
+        args->output.empty() ? (std::filesystem::path(args->bundle) / "README.txt").string() : args->output;
     // With -o - the sheets are on standard output: the summary must not be mixed into them.
     std::fprintf(
         to_stdout ? stderr : stdout,
@@ -216,7 +265,7 @@ void setup_make(CLI::App& app) {
         "%s%s\n",
         args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",
         run.unfolded.result.method.c_str(), r.sheets.size(), r.sheets.size() == 1 ? "" : "s", r.size_mm,
-        100 * r.overall.coverage, r.overall.tabs, r.overall.dropped_tabs, args->output.c_str(),
+        100 * r.overall.coverage, r.overall.tabs, r.overall.dropped_tabs, shown.c_str(),
         files.size() > 1 ? (" (+" + std::to_string(files.size() - 1) + " more)").c_str() : "");
   });
 }

@@ -11,5 +11,6 @@ void setup_bench(CLI::App& app);
 void setup_cut(CLI::App& app);
 void setup_profiles(CLI::App& app);
 void setup_devices(CLI::App& app);
+void setup_calibrate(CLI::App& app);
 
 }  // namespace foldkit::cli

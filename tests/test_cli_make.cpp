@@ -163,7 +163,7 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
       {{"make", mesh, "-o", out, "--paper", "B7"}, 2, "unknown paper"},
       {{"make", mesh, "-o", out, "--size", "-3mm"}, 2, "must be between 1 mm and 10000 mm"},
       {{"make", mesh, "-o", out, "--size", "12parsecs"}, 2, "expected a length such as 5mm"},
-      {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg or .png"},
+      {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg, .png or .dxf"},
       {{"make", mesh, "-o", out, "--size", "5m"}, 2, "expected a length such as 5mm"},
       {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
       {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, "largest --size that fits"},

@@ -225,11 +225,12 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
     if (p.piece >= 0) s += " (piece " + std::to_string(p.piece) + ")";
     return s;
   };
+  const Vec2 shift = options.offset_mm + (options.regmarks ? options.print_cut_offset_mm : Vec2{0, 0});
   auto placed = [&](const std::vector<Vec2>& pts) {
     std::vector<Vec2> out;
     out.reserve(pts.size());
     for (Vec2 p : pts)
-      out.push_back(p + options.offset_mm);
+      out.push_back(p + shift);
     return out;
   };
 

@@ -23,6 +23,9 @@ struct PlanOptions {
   double overcut_mm = 0;                  ///< closed cuts continue this far past their start
   bool order = true;                      ///< false keeps sheet order (for comparisons)
   Vec2 offset_mm{0, 0};                   ///< where the sheet's top-left corner sits in the cutting area
+  /// Print-and-cut only (with regmarks): added to every stroke, not to the mark search, to correct the
+  /// printer-to-cutter error `foldkit calibrate` measured (sheet mm: x right, y down).
+  Vec2 print_cut_offset_mm{0, 0};
 };
 
 /// Plans the job. Throws DeviceError naming the first stroke that leaves the cutting area or the mat

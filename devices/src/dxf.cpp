@@ -1,0 +1,257 @@
+// Written by hand rather than through dxflib: dxflib writes only to a file it opens by name (so not
+// through AtomicFile's stream) and R12 needs no more than the few group codes below.
+#include "foldkit/devices/dxf.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/devices/render.hpp"
+#include "foldkit/error.hpp"
+
+namespace foldkit::devices {
+namespace {
+
+constexpr int kInsUnitsMillimetres = 4;  // $INSUNITS: 1 inch, 4 mm
+constexpr int kMeasurementMetric = 1;    // $MEASUREMENT: 0 imperial, 1 metric
+constexpr int kPolylineClosed = 1;       // POLYLINE group 70 flag
+constexpr int kColourDefault = 7;        // AutoCAD colour index: white on black, black on white
+
+// The layers every file declares, in this order, so a user's per-layer settings find the same names in
+// every file; other roles get their layer when they occur.
+constexpr PathRole kNamedRoles[] = {PathRole::Cut, PathRole::Mountain, PathRole::Valley,
+                                    PathRole::Tab, PathRole::Label,    PathRole::RegMark};
+
+// Colours as the SVG and PDF draw the roles (AutoCAD index nearest to each), so a user who picks
+// lines by colour in the cutting program sees the same choice as on the print preview.
+int layer_colour(PathRole role) {
+  switch (role) {
+    case PathRole::Mountain:
+      return 1;  // red
+    case PathRole::Valley:
+      return 5;  // blue
+    case PathRole::Tab:
+      return 8;  // grey
+    case PathRole::Label:
+      return 3;  // green: apart from the black cut lines
+    case PathRole::RegMark:
+      return 6;  // magenta
+    default:
+      return kColourDefault;
+  }
+}
+
+// 0.1 µm, locale-independent, trailing zeros dropped.
+std::string num(double v) {
+  if (std::abs(v) < 5e-5) v = 0;
+  char buffer[64];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed, 4);
+  std::string s(buffer, ec == std::errc() ? end : buffer);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0')
+      s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s.empty() || s == "-0" ? "0" : s;
+}
+
+// Group codes are written right-aligned in three columns, as AutoCAD does; readers accept either.
+class GroupWriter {
+ public:
+  explicit GroupWriter(std::ostream& out) : out_(out) {}
+  void code(int c, const std::string& value) {
+    char buffer[8];
+    std::snprintf(buffer, sizeof buffer, "%3d", c);
+    out_ << buffer << "\n" << value << "\n";
+  }
+  void code(int c, int value) { code(c, std::to_string(value)); }
+  void real(int c, double value) { code(c, num(value)); }
+  void point(int base, Vec2 p) {
+    real(base, p.x);
+    real(base + 10, p.y);
+  }
+  void header_point(const char* name, Vec2 p, bool with_z) {
+    code(9, name);
+    point(10, p);
+    if (with_z) real(30, 0);
+  }
+
+ private:
+  std::ostream& out_;
+};
+
+struct Polyline {
+  std::string layer;
+  std::vector<Vec2> points_dxf;
+  bool closed = false;
+};
+
+std::vector<Polyline> collect(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
+  std::vector<Polyline> out;
+  auto add = [&](const std::string& layer, const std::vector<Vec2>& pts, bool closed,
+                 const std::string& what) {
+    if (layer.empty() || pts.size() < 2) return;
+    Polyline pl{layer, {}, closed};
+    pl.points_dxf.reserve(pts.size());
+    for (Vec2 p : pts) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw OutputError(name, what + " has a point that is not a number");
+      pl.points_dxf.push_back(dxf_point(p));
+    }
+    out.push_back(std::move(pl));
+  };
+  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
+    const Path& p = sheet.paths[i];
+    add(dxf_layer(p.role), p.points_mm, p.closed,
+        std::string(role_name(p.role)) + " path " + std::to_string(i + 1));
+  }
+  for (const Text& t : sheet.texts) {
+    const std::string layer = dxf_layer(t.role);
+    if (layer.empty() || t.text.empty()) continue;
+    if (!options.font) throw OutputError(name, "cannot write the labels: no stroke font loaded");
+    for (const auto& stroke : text_strokes(*options.font, t))
+      add(layer, stroke, false, "text \"" + t.text + "\"");
+  }
+  return out;
+}
+
+void write_header(GroupWriter& g, Vec2 size_mm) {
+  g.code(0, "SECTION");
+  g.code(2, "HEADER");
+  g.code(9, "$ACADVER");
+  g.code(1, "AC1009");
+  g.code(9, "$INSUNITS");
+  g.code(70, kInsUnitsMillimetres);
+  g.code(9, "$MEASUREMENT");
+  g.code(70, kMeasurementMetric);
+  // The page, not the drawing's bounding box: readers that place a drawing by its extents then keep
+  // the page origin.
+  g.header_point("$EXTMIN", dxf_point({0, size_mm.y}), true);
+  g.header_point("$EXTMAX", dxf_point({size_mm.x, 0}), true);
+  g.header_point("$LIMMIN", dxf_point({0, size_mm.y}), false);
+  g.header_point("$LIMMAX", dxf_point({size_mm.x, 0}), false);
+  g.code(0, "ENDSEC");
+}
+
+void write_tables(GroupWriter& g, const std::vector<std::pair<std::string, int>>& layers) {
+  g.code(0, "SECTION");
+  g.code(2, "TABLES");
+  g.code(0, "TABLE");
+  g.code(2, "LTYPE");
+  g.code(70, 1);
+  g.code(0, "LTYPE");
+  g.code(2, "CONTINUOUS");
+  g.code(70, 0);
+  g.code(3, "Solid line");
+  g.code(72, 65);
+  g.code(73, 0);
+  g.real(40, 0);
+  g.code(0, "ENDTAB");
+  g.code(0, "TABLE");
+  g.code(2, "LAYER");
+  g.code(70, static_cast<int>(layers.size()));
+  for (const auto& [layer, colour] : layers) {
+    g.code(0, "LAYER");
+    g.code(2, layer);
+    g.code(70, 0);
+    g.code(62, colour);
+    g.code(6, "CONTINUOUS");
+  }
+  g.code(0, "ENDTAB");
+  g.code(0, "ENDSEC");
+}
+
+void write_entities(GroupWriter& g, const std::vector<Polyline>& lines) {
+  g.code(0, "SECTION");
+  g.code(2, "ENTITIES");
+  for (const Polyline& pl : lines) {
+    g.code(0, "POLYLINE");
+    g.code(8, pl.layer);
+    g.code(66, 1);  // vertices follow
+    g.point(10, {0, 0});
+    g.real(30, 0);
+    g.code(70, pl.closed ? kPolylineClosed : 0);
+    for (Vec2 p : pl.points_dxf) {
+      g.code(0, "VERTEX");
+      g.code(8, pl.layer);
+      g.point(10, p);
+      g.real(30, 0);
+    }
+    g.code(0, "SEQEND");
+    g.code(8, pl.layer);
+  }
+  g.code(0, "ENDSEC");
+}
+
+}  // namespace
+
+std::string dxf_layer(PathRole role) {
+  if (role == PathRole::Hint) return "";
+  std::string name = role_name(role);
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
+  return name;
+}
+
+Vec2 dxf_point(Vec2 sheet_mm) {
+  return {sheet_mm.x, -sheet_mm.y};
+}
+
+std::string dxf_document(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
+  const Vec2 size = sheet.size_mm;
+  if (!(std::isfinite(size.x) && std::isfinite(size.y) && size.x > 0 && size.y > 0))
+    throw OutputError(name, "the sheet has no valid size");
+  const std::vector<Polyline> lines = collect(sheet, options, name);
+
+  std::vector<std::pair<std::string, int>> layers;
+  auto declare = [&](PathRole role) {
+    const std::string layer = dxf_layer(role);
+    if (layer.empty()) return;
+    for (const auto& l : layers)
+      if (l.first == layer) return;
+    layers.emplace_back(layer, layer_colour(role));
+  };
+  for (PathRole role : kNamedRoles)
+    declare(role);
+  for (const Path& p : sheet.paths)
+    declare(p.role);
+  for (const Text& t : sheet.texts)
+    declare(t.role);
+
+  std::ostringstream out;
+  GroupWriter g(out);
+  write_header(g, size);
+  write_tables(g, layers);
+  g.code(0, "SECTION");
+  g.code(2, "BLOCKS");
+  g.code(0, "ENDSEC");
+  write_entities(g, lines);
+  g.code(0, "EOF");
+  return out.str();
+}
+
+std::vector<std::filesystem::path> write_dxf_sheets(const std::vector<Sheet>& sheets,
+                                                    const std::filesystem::path& path,
+                                                    const DxfOptions& options) {
+  if (sheets.empty()) throw OutputError(path.string(), "nothing to write: no sheets");
+  // Every document is built and every temporary file written before the first rename, as render_sheets
+  // does: a failure on sheet 3 never leaves sheets 1 and 2 of this run beside sheet 3 of an old one.
+  std::vector<AtomicFile> files;
+  files.reserve(sheets.size());
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    const std::filesystem::path target = sheet_file_path(path, i);
+    const std::string text = dxf_document(sheets[i], options, target.string());
+    files.emplace_back(target);
+    files.back().stream() << text;
+  }
+  std::vector<std::filesystem::path> written;
+  for (AtomicFile& file : files) {
+    file.commit();
+    written.push_back(file.target());
+  }
+  return written;
+}
+
+}  // namespace foldkit::devices

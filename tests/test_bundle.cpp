@@ -1,0 +1,221 @@
+// The hand-off bundle: a folder that holds exactly what its README.txt lists (per sheet PDF, PNG at
+// 300 dpi, DXF, SVG; per part a transparent PNG), written all-or-nothing, with a smaller bundle
+// replacing a larger one without leaving its extra sheets behind, and nothing else in the folder touched.
+#include "foldkit/devices/bundle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "foldkit/error.hpp"
+#include "sample_sheets.hpp"
+#include "test_paths.hpp"
+
+namespace fs = std::filesystem;
+using namespace foldkit;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The file names under the README's FILES heading.
+std::set<std::string> readme_files(const fs::path& readme) {
+  std::istringstream in(slurp(readme));
+  std::set<std::string> names;
+  std::string line;
+  bool in_files = false;
+  while (std::getline(in, line)) {
+    if (line == "FILES") {
+      in_files = true;
+    } else if (in_files) {
+      if (line.empty()) break;
+      names.insert(line.substr(0, line.find(' ')));
+    }
+  }
+  return names;
+}
+
+std::set<std::string> folder_files(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
+// Width, height and colour type from a PNG's IHDR chunk.
+struct PngHeader {
+  unsigned width = 0, height = 0;
+  int colour_type = -1;
+};
+
+PngHeader png_header(const fs::path& p) {
+  const std::string b = slurp(p);
+  PngHeader h;
+  if (b.size() < 26 || b.compare(1, 3, "PNG") != 0) return h;
+  auto be32 = [&](std::size_t at) {
+    return (static_cast<unsigned>(static_cast<unsigned char>(b[at])) << 24) |
+           (static_cast<unsigned>(static_cast<unsigned char>(b[at + 1])) << 16) |
+           (static_cast<unsigned>(static_cast<unsigned char>(b[at + 2])) << 8) |
+           static_cast<unsigned>(static_cast<unsigned char>(b[at + 3]));
+  };
+  h.width = be32(16);
+  h.height = be32(20);
+  h.colour_type = static_cast<unsigned char>(b[25]);
+  return h;
+}
+
+const devices::StrokeFont& font() {
+  static const devices::StrokeFont f = devices::load_stroke_font(devices::default_stroke_font_path());
+  return f;
+}
+
+devices::BundleOptions options(const std::string& name) {
+  devices::BundleOptions o;
+  o.name = name;
+  o.font = &font();
+  return o;
+}
+
+std::string python() {
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+}  // namespace
+
+TEST(Bundle, HoldsExactlyTheFilesItsReadmeLists) {
+  const fs::path dir = test::temp_dir("bundle") / "out";
+  const std::vector<Sheet> sheets = {test::two_piece_sheet(), test::two_piece_sheet({20, 20})};
+  devices::write_bundle(sheets, dir, options("box"));
+  const auto listed = readme_files(dir / "README.txt");
+  EXPECT_EQ(folder_files(dir), listed);
+  // Per sheet: the print twice, the cut lines twice, one PNG per part (two pieces a sheet).
+  for (const char* f :
+       {"box-sheet-1.pdf", "box-sheet-1.png", "box-sheet-1.dxf", "box-sheet-1.svg", "box-sheet-1-part-1.png",
+        "box-sheet-1-part-2.png", "box-sheet-2.pdf", "box-sheet-2-part-2.png", "README.txt"})
+    EXPECT_EQ(listed.count(f), 1u) << f;
+  EXPECT_EQ(listed.size(), 2 * 6 + 1u);
+}
+
+TEST(Bundle, SheetPngsAre300DpiAndPartPngsHaveAnAlphaChannel) {
+  const fs::path dir = test::temp_dir("bundle-png") / "out";
+  const Sheet s = test::two_piece_sheet();
+  devices::write_bundle({s}, dir, options("box"));
+  const PngHeader sheet = png_header(dir / "box-sheet-1.png");
+  EXPECT_NEAR(sheet.width, s.size_mm.x / 25.4 * 300, 1.0);
+  const PngHeader part = png_header(dir / "box-sheet-1-part-1.png");
+  EXPECT_EQ(part.colour_type, 6) << "RGBA";
+  // 40 x 30 mm piece plus 1 mm of transparent border on each side, at 300 dpi.
+  EXPECT_NEAR(part.width, 42 / 25.4 * 300, 1.0);
+  EXPECT_NEAR(part.height, 32 / 25.4 * 300, 1.0);
+}
+
+TEST(Bundle, PartPngsAreTransparentOutsideThePieceAndOpaqueInside) {
+  const fs::path dir = test::temp_dir("bundle-alpha") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  const fs::path out = dir.parent_path() / "alpha.txt";
+  const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/png_alpha.py").string() + " " +
+                          (dir / "box-sheet-1-part-1.png").string() + " >" + out.string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(out);
+  const std::string result = slurp(out);
+  EXPECT_NE(result.find("corner=0 "), std::string::npos) << result;
+  // The 40 x 30 mm piece has a 5 x 5 mm hole; inside its 42 x 32 mm image: (1200 - 25) / 1344 = 0.87.
+  const double opaque = std::stod(result.substr(result.find("opaque=") + 7));
+  EXPECT_NEAR(opaque, (1200.0 - 25) / (42 * 32), 0.03) << result;
+}
+
+TEST(Bundle, ASmallerBundleRemovesTheSheetsOfALargerOneAndNothingElse) {
+  const fs::path dir = test::temp_dir("bundle-replace") / "out";
+  fs::create_directory(dir);
+  std::ofstream(dir / "my-notes.txt") << "mine";
+  devices::write_bundle({test::two_piece_sheet(), test::two_piece_sheet({20, 20})}, dir, options("box"));
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  auto expected = readme_files(dir / "README.txt");
+  expected.insert("my-notes.txt");
+  EXPECT_EQ(folder_files(dir), expected);
+  EXPECT_FALSE(fs::exists(dir / "box-sheet-2.pdf"));
+}
+
+TEST(Bundle, AFailureLeavesTheEarlierBundleAsItWas) {
+  const fs::path dir = test::temp_dir("bundle-fail") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  const std::string readme = slurp(dir / "README.txt");
+  const auto before = folder_files(dir);
+  Sheet bad = test::two_piece_sheet();
+  bad.paths[0].points_mm[1].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(devices::write_bundle({test::two_piece_sheet(), bad}, dir, options("box")), OutputError);
+  EXPECT_EQ(folder_files(dir), before);
+  EXPECT_EQ(slurp(dir / "README.txt"), readme);
+}
+
+TEST(Bundle, TheReadmeNamesEveryProgramAndASourceForItsFigures) {
+  const fs::path dir = test::temp_dir("bundle-readme") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  const std::string readme = slurp(dir / "README.txt");
+  for (const char* s : {"Silhouette Studio", "Cricut Design Space", "CanvasWorkspace", "Print Then Cut",
+                        "box-sheet-1.dxf", "no source found", "[1] ", "[5] "})
+    EXPECT_NE(readme.find(s), std::string::npos) << s;
+}
+
+TEST(Bundle, MakeWritesTheBundleOfATwoSheetModel) {
+  const fs::path dir = test::temp_dir("bundle-cli") / "fish";
+  // 190 mm: fish_350 takes two A4 sheets (one from 150 to 200 mm when this was written).
+  const auto run = test::run_foldkit({"make", test::example_mesh("fish_350.obj").string(), "--size", "190mm",
+                                      "--bundle", dir.string(), "--json", "-q"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto report = nlohmann::json::parse(run.out);
+  const int sheets = report["sheet_count"];
+  ASSERT_GE(sheets, 2);
+  const auto listed = readme_files(dir / "README.txt");
+  EXPECT_EQ(folder_files(dir), listed);
+  EXPECT_EQ(listed.count("fish_350-sheet-" + std::to_string(sheets + 1) + ".pdf"), 0u);
+  for (int sheet = 1; sheet <= sheets; ++sheet) {
+    const std::string stem = "fish_350-sheet-" + std::to_string(sheet);
+    for (const char* ext : {".pdf", ".png", ".dxf", ".svg"})
+      EXPECT_EQ(listed.count(stem + ext), 1u) << stem << ext;
+    EXPECT_TRUE(std::any_of(listed.begin(), listed.end(),
+                            [&](const std::string& f) { return f.rfind(stem + "-part-", 0) == 0; }))
+        << "no part PNG for sheet " << sheet;
+  }
+  EXPECT_EQ(png_header(dir / "fish_350-sheet-1.png").width, 2480u) << "A4 at 300 dpi";
+}
+
+TEST(Bundle, MakeWithoutOutputOrBundleIsAUsageError) {
+  const auto run = test::run_foldkit({"make", test::example_mesh("spot_128.obj").string(), "-q"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--bundle"), std::string::npos) << run.err;
+}
+
+TEST(Bundle, AHandEditedReadmeNeverMakesItDeleteOtherFiles) {
+  const fs::path dir = test::temp_dir("bundle-edited") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  std::ofstream(dir / "my-notes.txt") << "mine";
+  std::ofstream(dir.parent_path() / "outside.pdf") << "mine";
+  {
+    std::ofstream readme(dir / "README.txt");
+    readme << "FILES\nmy-notes.txt  x\n../outside.pdf  x\nbox-sheet-9.txt  x\n\n";
+  }
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  EXPECT_TRUE(fs::exists(dir / "my-notes.txt"));
+  EXPECT_TRUE(fs::exists(dir.parent_path() / "outside.pdf"));
+}
+
+TEST(Bundle, PaperTooLargeForA300DpiPrintIsRefusedBeforeAnythingIsWritten) {
+  const fs::path dir = test::temp_dir("bundle-huge") / "out";
+  Sheet huge = test::two_piece_sheet();
+  huge.size_mm = {5000, 5000};
+  EXPECT_THROW(devices::write_bundle({huge}, dir, options("box")), OutputError);
+  EXPECT_FALSE(fs::exists(dir));
+}

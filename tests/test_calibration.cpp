@@ -1,0 +1,250 @@
+// The stored print-and-cut calibration: a TOML file per device that round-trips and refuses nonsense,
+// a plan option that moves every stroke of a job with registration marks by exactly the stored offset
+// (and nothing else), the simulated device cutting off the print by that offset, and the CLI storing it
+// once (`calibrate --offset`) so that a new run of `cut --regmarks` applies it.
+#include "foldkit/devices/calibration.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "foldkit/devices/command_parser.hpp"
+#include "foldkit/devices/gpgl.hpp"
+#include "foldkit/devices/plan.hpp"
+#include "foldkit/devices/print_cut_preview.hpp"
+#include "foldkit/devices/send.hpp"
+#include "foldkit/devices/simulated_device.hpp"
+#include "foldkit/error.hpp"
+#include "foldkit/layout/calibration_page.hpp"
+#include "test_paths.hpp"
+
+namespace fs = std::filesystem;
+using namespace foldkit;
+using namespace foldkit::devices;
+
+namespace {
+
+const ProfileSet& profiles() {
+  static const ProfileSet set = load_profiles(builtin_profiles_dir());
+  return set;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every M and D point of a GP-GL stream after the registration-mark search, in device units.
+std::vector<DevicePoint> geometry(const std::string& stream) {
+  GpglParser parser;
+  std::vector<DevicePoint> out;
+  bool after_search = false;
+  for (const ParsedCommand& c : parser.feed(stream_bytes(stream))) {
+    if (c.name == "TB" && !c.params.empty() && (c.params[0] == 123 || c.params[0] == 124))
+      after_search = true;
+    if (!after_search || (c.name != "M" && c.name != "D")) continue;
+    for (std::size_t i = 0; i + 1 < c.params.size(); i += 2)
+      out.push_back({std::llround(c.params[i]), std::llround(c.params[i + 1])});
+  }
+  return out;
+}
+
+// The offset in device units and order, as the planner converts page millimetres.
+DevicePoint device_delta(const DeviceProfile& d, Vec2 offset_mm) {
+  const Vec2 area = cutting_area_mm(d, "");
+  const Vec2 a = page_to_device(d, {50, 50}, area), b = page_to_device(d, Vec2{50, 50} + offset_mm, area);
+  return {std::llround(b.x - a.x), std::llround(b.y - a.y)};
+}
+
+// `before` moved by `d` equals `after`, as sets of points: the planner may order the moved strokes
+// differently (its start point, the top-left mark, does not move). The final return home is not
+// geometry and stays.
+void expect_shifted(std::vector<DevicePoint> before, std::vector<DevicePoint> after, DevicePoint d) {
+  auto key = [](DevicePoint p) { return std::pair{p.a, p.b}; };
+  auto drop_home = [](std::vector<DevicePoint>& v) {
+    v.erase(std::remove(v.begin(), v.end(), DevicePoint{0, 0}), v.end());
+  };
+  drop_home(before);
+  drop_home(after);
+  ASSERT_GT(before.size(), 10u);
+  for (DevicePoint& p : before)
+    p = {p.a + d.a, p.b + d.b};
+  std::sort(before.begin(), before.end(), [&](DevicePoint x, DevicePoint y) { return key(x) < key(y); });
+  std::sort(after.begin(), after.end(), [&](DevicePoint x, DevicePoint y) { return key(x) < key(y); });
+  EXPECT_EQ(before, after);
+}
+
+// Sets an environment variable for the lifetime of the object (the CLI runs inherit it).
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    ::setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    if (old_)
+      ::setenv(name_, old_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+}  // namespace
+
+TEST(Calibration, AStoredOffsetReadsBackTheSame) {
+  const fs::path file = calibration_file(test::temp_dir("calib-rt"), "cameo4");
+  EXPECT_FALSE(load_calibration(file, "cameo4").has_value());
+  save_calibration(file, {"cameo4", {0.8, -1.2}});
+  const auto c = load_calibration(file, "cameo4");
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ(c->offset_mm, (Vec2{0.8, -1.2}));
+}
+
+TEST(Calibration, MalformedForeignOrAbsurdFilesAreInputErrorsNamingTheKey) {
+  const fs::path dir = test::temp_dir("calib-bad");
+  auto expect_error = [&](const std::string& text, const std::string& needle) {
+    const fs::path f = dir / "cameo4.toml";
+    std::ofstream(f) << text;
+    try {
+      (void)load_calibration(f, "cameo4");
+      ADD_FAILURE() << "no error for: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  expect_error("kind = \"calibration\"\ndevice = \"cameo4\"\noffset_x_mm = 1\n", "offset_y_mm");
+  expect_error("kind = \"calibration\"\ndevice = \"cameo3\"\noffset_x_mm = 1\noffset_y_mm = 0\n", "cameo3");
+  expect_error("kind = \"calibration\"\ndevice = \"cameo4\"\noffset_x_mm = 90\noffset_y_mm = 0\n",
+               "offset_x_mm");
+  expect_error("kind = \"calibration\"\ndevice = \"cameo4\"\noffset_x_mm = \"a\"\noffset_y_mm = 0\n",
+               "offset_x_mm");
+  expect_error("kind = \"calibration\"\ndevice = \"cameo4\"\noffset_x_mm = 1\noffset_y_mm = 0\nx = 1\n",
+               "x: unknown");
+  expect_error("offset_x_mm = = 1\n", "line 1");
+  EXPECT_THROW(save_calibration(dir / "x.toml", {"cameo4", {0, std::nan("")}}), InputError);
+}
+
+TEST(Calibration, TheOffsetShiftsEveryStrokeOfAPrintAndCutJobByExactlyThatMuch) {
+  const DeviceProfile& cameo = profiles().device("cameo4");
+  const MediaProfile& paper = profiles().medium("copy-80");
+  const auto page = layout::calibration_page();
+  PlanOptions plain;
+  plain.regmarks = true;
+  PlanOptions shifted = plain;
+  shifted.print_cut_offset_mm = {0.8, -1.2};
+  const std::string a = encode_gpgl(plan_job(page.sheet, cameo, paper, plain));
+  const std::string b = encode_gpgl(plan_job(page.sheet, cameo, paper, shifted));
+  const DevicePoint d = device_delta(cameo, {0.8, -1.2});
+  EXPECT_EQ(std::abs(d.a) + std::abs(d.b), 16 + 24) << "0.8 and 1.2 mm at 20 units/mm";
+  expect_shifted(geometry(a), geometry(b), d);
+  // The mark search itself is where the marks are printed: unchanged.
+  EXPECT_EQ(a.substr(0, a.find("TB123")), b.substr(0, b.find("TB123")));
+}
+
+TEST(Calibration, WithoutRegistrationMarksTheOffsetDoesNothing) {
+  const DeviceProfile& cameo = profiles().device("cameo4");
+  const auto page = layout::calibration_page();
+  PlanOptions shifted;
+  shifted.print_cut_offset_mm = {0.8, -1.2};
+  EXPECT_EQ(encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), {})),
+            encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), shifted)));
+}
+
+TEST(Calibration, TheSimulatedDeviceCutsTheCrossesOffTheirPrintByTheOffset) {
+  const DeviceProfile& cameo = profiles().device("cameo4");
+  const auto page = layout::calibration_page();
+  PlanOptions plan;
+  plan.regmarks = true;
+  plan.print_cut_offset_mm = {0.8, -1.2};
+  const std::string stream = encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), plan));
+  SimulatedDevice sim(cameo);
+  SendOptions send;
+  send.protocol = Protocol::Gpgl;
+  send_job(stream_bytes(stream), sim, send);
+  sim.close();
+  const auto cuts = simulated_cuts_mm(sim, cameo, "");
+  ASSERT_EQ(cuts.size(), 2 * page.crosses_mm.size());
+  for (Vec2 c : page.crosses_mm) {
+    int near = 0;
+    for (const auto& line : cuts) {
+      const Vec2 mid = (line.front() + line.back()) * 0.5;
+      // 1/20 mm: the device's step.
+      if (std::abs(mid.x - (c.x + 0.8)) <= 0.05 && std::abs(mid.y - (c.y - 1.2)) <= 0.05) ++near;
+    }
+    EXPECT_EQ(near, 2) << "cross at " << c.x << ", " << c.y;
+  }
+  const fs::path png = test::temp_dir("calib-sim") / "preview.png";
+  render_print_and_cut(page.sheet, cuts, png);
+  EXPECT_GT(fs::file_size(png), 1000u);
+}
+
+TEST(Calibration, AnOffsetEnteredOnceShiftsEveryLaterCutJobOnThatDevice) {
+  const fs::path dir = test::temp_dir("calib-cli");
+  const ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
+  const std::string mesh = test::example_mesh("spot_128.obj").string();
+  const std::vector<std::string> cut = {"cut",        mesh,     "--device", "cameo4",
+                                        "--regmarks", "--size", "80mm",     "-q"};
+  auto cut_to = [&](const std::string& name) {
+    auto args = cut;
+    args.insert(args.end(), {"-o", (dir / name).string()});
+    const auto run = test::run_foldkit(args);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return slurp(dir / name);
+  };
+  const std::string before = cut_to("before.gpgl");
+
+  const auto store = test::run_foldkit({"calibrate", "--device", "cameo4", "--offset", "0.8,-1.2mm"});
+  ASSERT_EQ(store.exit_code, 0) << store.err;
+  EXPECT_TRUE(fs::exists(dir / "config/foldkit/calibration/cameo4.toml"));
+
+  // A new process, which knows the offset only from the file.
+  const std::string after = cut_to("after.gpgl");
+  expect_shifted(geometry(before), geometry(after), device_delta(profiles().device("cameo4"), {0.8, -1.2}));
+
+  // --reset takes the correction back.
+  ASSERT_EQ(test::run_foldkit({"calibrate", "--device", "cameo4", "--reset"}).exit_code, 0);
+  EXPECT_EQ(cut_to("reset.gpgl"), before);
+}
+
+TEST(Calibration, CalibrateWritesThePageTheJobAndThePreview) {
+  const fs::path dir = test::temp_dir("calib-page");
+  const ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
+  const auto run =
+      test::run_foldkit({"calibrate", "--device", "cameo4", "-o", (dir / "page.pdf").string(), "--job",
+                         (dir / "job.gpgl").string(), "--preview", (dir / "cut.png").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(slurp(dir / "page.pdf").rfind("%PDF", 0), 0u);
+  const std::string job = slurp(dir / "job.gpgl");
+  EXPECT_NE(job.find("TB123"), std::string::npos) << "cut relative to the registration marks";
+  EXPECT_EQ(geometry(job).size() > 10, true);
+  EXPECT_GT(fs::file_size(dir / "cut.png"), 1000u);
+}
+
+TEST(Calibration, BadOffsetsAreUsageErrorsAndStoreNothing) {
+  const fs::path dir = test::temp_dir("calib-badcli");
+  const ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
+  for (const char* bad : {"0.8", "a,b", "0.8,-1.2km", "30,0", "0.8,nan"}) {
+    const auto run = test::run_foldkit({"calibrate", "--device", "cameo4", "--offset", bad});
+    EXPECT_EQ(run.exit_code, 2) << bad << ": " << run.err;
+    EXPECT_NE(run.err.find("--offset"), std::string::npos) << run.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "config"));
+  const auto hpgl = test::run_foldkit({"calibrate", "--device", "generic-hpgl"});
+  EXPECT_NE(hpgl.exit_code, 0);
+  EXPECT_NE(hpgl.err.find("registration marks"), std::string::npos) << hpgl.err;
+}

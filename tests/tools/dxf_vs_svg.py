@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Independent check of foldkit's DXF: reads it back with ezdxf and compares it with the SVG of the
+same sheet.  usage: dxf_vs_svg.py SHEET.svg SHEET.dxf
+
+Every path of the SVG groups cut, mountain, valley, tab and regmark must be a polyline on the DXF layer
+of the same name in capitals, at the same place (DXF point = (x, -y) of the SVG point) within 0.01 mm,
+and vice versa; texts must appear as strokes on the LABEL layer; $INSUNITS must say millimetres.
+Exit 0 when all holds, 1 with one line per difference, 77 when ezdxf is missing (the test then skips).
+"""
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+try:
+    import ezdxf
+except ImportError:
+    print("ezdxf is not installed (Debian: python3-ezdxf)")
+    sys.exit(77)
+
+TOLERANCE_MM = 0.01
+ROLES = ["cut", "mountain", "valley", "tab", "regmark"]
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def svg_paths(path):
+    root = ET.parse(path).getroot()
+    width, height = (float(root.get(k).removesuffix("mm")) for k in ("width", "height"))
+    out, texts = {}, 0
+    for g in root.iter(SVG + "g"):
+        role = g.get("id")
+        if role is None:
+            continue
+        for p in g.findall(SVG + "path"):
+            d = p.get("d")
+            nums = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", d)]
+            pts = list(zip(nums[0::2], nums[1::2]))
+            out.setdefault(role, []).append((pts, d.rstrip().endswith("Z")))
+        if role == "label":
+            texts += len(list(g.iter(SVG + "text")))
+    return (width, height), out, texts
+
+
+def dxf_paths(path):
+    doc = ezdxf.readfile(path)
+    out = {}
+    for e in doc.modelspace():
+        if e.dxftype() == "POLYLINE":
+            pts = [(v.dxf.location.x, v.dxf.location.y) for v in e.vertices]
+            closed = e.is_closed
+        elif e.dxftype() == "LWPOLYLINE":
+            pts = [(x, y) for x, y, *_ in e.get_points()]
+            closed = e.closed
+        else:
+            continue
+        out.setdefault(e.dxf.layer, []).append((pts, closed))
+    return doc, out
+
+
+def key(pts):
+    return tuple(round(c, 1) for p in pts[:2] for c in p)
+
+
+def same(a, b):
+    return len(a) == len(b) and all(abs(p[0] - q[0]) <= TOLERANCE_MM and abs(p[1] - q[1]) <= TOLERANCE_MM
+                                   for p, q in zip(a, b))
+
+
+def main():
+    svg_file, dxf_file = sys.argv[1], sys.argv[2]
+    size, svg, texts = svg_paths(svg_file)
+    doc, dxf = dxf_paths(dxf_file)
+    problems = []
+    if doc.header.get("$INSUNITS") != 4:
+        problems.append(f"$INSUNITS is {doc.header.get('$INSUNITS')}, not 4 (mm)")
+    layers = {layer.dxf.name for layer in doc.layers}
+    for name in ["CUT", "MOUNTAIN", "VALLEY", "TAB", "LABEL", "REGMARK"]:
+        if name not in layers:
+            problems.append(f"layer {name} is not declared")
+    compared = 0
+    for role in ROLES:
+        want = [([(x, -y) for x, y in pts], closed) for pts, closed in svg.get(role, [])]
+        have = list(dxf.get(role.upper(), []))
+        if len(want) != len(have):
+            problems.append(f"{role}: {len(want)} paths in the SVG, {len(have)} on layer {role.upper()}")
+            continue
+        pool = {}
+        for i, (pts, closed) in enumerate(have):
+            pool.setdefault(key(pts), []).append(i)
+        used = set()
+        for pts, closed in want:
+            match = None
+            for i in pool.get(key(pts), []) + list(range(len(have))):
+                if i not in used and have[i][1] == closed and same(pts, have[i][0]):
+                    match = i
+                    break
+            if match is None:
+                problems.append(f"{role}: path starting at {pts[0]} has no DXF polyline within {TOLERANCE_MM} mm")
+                continue
+            used.add(match)
+            compared += 1
+    strokes = dxf.get("LABEL", [])
+    if texts and not strokes:
+        problems.append(f"{texts} label texts in the SVG, no strokes on layer LABEL")
+    w, h = size
+    for layer, lines in dxf.items():
+        for pts, _ in lines:
+            for x, y in pts:
+                if not (-0.001 <= x <= w + 0.001 and -h - 0.001 <= y <= 0.001):
+                    problems.append(f"{layer}: point ({x}, {y}) lies outside the page 0..{w} x -{h}..0")
+                    break
+    for p in problems:
+        print(p)
+    print(f"compared {compared} paths, {len(strokes)} label strokes, {len(problems)} problems")
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()
