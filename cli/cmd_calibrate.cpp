@@ -3,9 +3,11 @@
 // device first; `--offset DX,DY[mm]` stores what the user measured, and every later `cut --regmarks` on
 // that device applies it.
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -31,8 +31,15 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--lambda-m", o.unfold.lambda_m, "GA fitness weight of the sheet margin")->group(group);
   cmd.add_option("--lambda-b", o.unfold.lambda_b, "GA fitness weight of matching-edge distance")
       ->group(group);
-  cmd.add_option("--cut", o.cut_file, "File of edges (vertex index pairs) that must be cut")->group(group);
-  cmd.add_option("--keep", o.keep_file, "File of edges (vertex index pairs) that must stay folded")
+  cmd.add_option("--cut", o.cut_file,
+                 "File of edges that must be cut: pairs of vertex numbers as the mesh file writes them")
+      ->group(group);
+  cmd.add_option("--keep", o.keep_file, "File of edges that must stay folded (vertex number pairs, as --cut)")
+      ->group(group);
+  cmd.add_option("--index-base", o.index_base,
+                 "Number of the first vertex in --cut/--keep lists (default: the mesh format's own, OBJ 1, "
+                 "OFF and PLY 0)")
+      ->check(CLI::Range(0, 1))
       ->group(group);
 }
 
@@ -40,9 +47,32 @@ void finish_unfold_options(UnfoldCliOptions& o) {
   static const std::map<std::string, unfold::Method> methods = {
       {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
   if (auto it = methods.find(o.method); it != methods.end()) o.unfold.method = it->second;
-  if (!o.cut_file.empty()) o.unfold.seams.force_cut = unfold::read_edge_list(o.cut_file);
-  if (!o.keep_file.empty()) o.unfold.seams.forbid_cut = unfold::read_edge_list(o.keep_file);
 }
+
+namespace {
+
+// The user's seams and the file's own, in the loaded mesh's numbering.
+unfold::SeamConstraints seams_of(const unfold::LoadedMesh& loaded, const std::string& mesh_file,
+                                 const UnfoldCliOptions& o, std::vector<std::string>& notes) {
+  unfold::SeamConstraints seams = o.unfold.seams;
+  const int base = o.index_base.value_or(loaded.index_base);
+  const auto add = [&](const std::string& list, std::vector<std::array<int, 2>>& to) {
+    if (list.empty()) return;
+    const auto edges = unfold::to_mesh_edges(loaded, unfold::read_edge_list(list, base), list, base);
+    to.insert(to.end(), edges.begin(), edges.end());
+  };
+  add(o.cut_file, seams.force_cut);
+  add(o.keep_file, seams.forbid_cut);
+  if (!loaded.file_seams.empty()) {
+    const auto edges = unfold::to_mesh_edges(loaded, loaded.file_seams, mesh_file, loaded.index_base);
+    seams.force_cut.insert(seams.force_cut.end(), edges.begin(), edges.end());
+    notes.push_back(std::to_string(loaded.file_seams.size()) +
+                    " seam edge(s) marked in the file (l elements) cut");
+  }
+  return seams;
+}
+
+}  // namespace
 
 UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line,
                           const std::function<void(const unfold::LoadedMesh&)>& check_loaded) {
@@ -57,7 +87,9 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
     line.update(text);
     return true;
   };
-  run.result = unfold::unfold_mesh(run.loaded.mesh, options.unfold, report);
+  unfold::UnfoldOptions unfold_options = options.unfold;
+  unfold_options.seams = seams_of(run.loaded, mesh_file, options, run.loaded.notes);
+  run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
   return run;
 }
 

@@ -2,6 +2,7 @@
 // The options every command that unfolds shares (unfold, make, cut, bench): loading (--max-faces),
 // the method and its parameters, and the user's seams (--cut/--keep).
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -17,17 +18,20 @@ struct UnfoldCliOptions {
   unfold::UnfoldOptions unfold;
   std::string method = "default";
   std::string cut_file, keep_file;
+  /// The number of the first vertex in --cut/--keep lists; nullopt: the mesh format's own (OBJ 1, OFF/PLY 0).
+  std::optional<int> index_base;
 };
 
 /// Adds --max-faces, --method, --seed, --time-limit, --threads, --population, --lambda-p/-l/-m/-b,
-/// --cut FILE and --keep FILE to `cmd`, bound to `options`.
+/// --cut FILE, --keep FILE and --index-base to `cmd`, bound to `options`.
 void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& options);
 
-/// Completes `options` after parsing: the method name and the seam files. Throws Error/InputError.
+/// Completes `options` after parsing: the method name. Throws Error.
 void finish_unfold_options(UnfoldCliOptions& options);
 
-/// Loads the mesh and unfolds it, showing progress on `line`; notes from loading and unfolding are
-/// appended to `notes`.
+/// Loads the mesh and unfolds it, showing progress on `line`. The seams of --cut/--keep and the mesh
+/// file's own (OBJ `l` elements) are named by the file's vertex numbers and mapped onto the loaded mesh;
+/// a pair that is not an edge of the file is an InputError (exit 3).
 struct UnfoldRun {
   unfold::LoadedMesh loaded;
   unfold::UnfoldResult result;

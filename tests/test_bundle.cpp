@@ -109,6 +109,17 @@ TEST(Bundle, HoldsExactlyTheFilesItsReadmeLists) {
   EXPECT_EQ(listed.size(), 2 * 6 + 1u);
 }
 
+TEST(Bundle, PartFilesAreNamedByTheLetterPrintedOnThePart) {
+  const fs::path dir = test::temp_dir("bundle-letters") / "out";
+  Sheet s = test::two_piece_sheet();
+  s.texts.push_back({"B", {30, 30}, 6, 0, PathRole::Piece, 0});
+  s.texts.push_back({"../x", {80, 30}, 6, 0, PathRole::Piece, 1});  // not a file name: the number stays
+  devices::write_bundle({s}, dir, options("box"));
+  EXPECT_TRUE(fs::exists(dir / "box-sheet-1-part-B.png"));
+  EXPECT_TRUE(fs::exists(dir / "box-sheet-1-part-2.png"));
+  EXPECT_NE(slurp(dir / "README.txt").find("part B for Print Then Cut"), std::string::npos);
+}
+
 TEST(Bundle, SheetPngsAre300DpiAndPartPngsHaveAnAlphaChannel) {
   const fs::path dir = test::temp_dir("bundle-png") / "out";
   const Sheet s = test::two_piece_sheet();
@@ -122,8 +133,32 @@ TEST(Bundle, SheetPngsAre300DpiAndPartPngsHaveAnAlphaChannel) {
   EXPECT_NEAR(part.height, 32 / 25.4 * 300, 1.0);
 }
 
+TEST(Bundle, PngsSayTheirResolutionSoProgramsOpenThemAtPrintSize) {
+  const fs::path dir = test::temp_dir("bundle-dpi") / "out";
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  for (const char* f : {"box-sheet-1.png", "box-sheet-1-part-1.png"}) {
+    const std::string b = slurp(dir / f);
+    // pHYs right after IHDR: 300 dpi = 11811 pixels per metre on both axes, unit metre.
+    ASSERT_GT(b.size(), 54u);
+    EXPECT_EQ(b.substr(37, 4), "pHYs") << f;
+    EXPECT_EQ(b.substr(41, 9), std::string("\0\0\x2e\x23\0\0\x2e\x23\x01", 9)) << f;
+  }
+  // Still a PNG every reader takes (the chunk's CRC is right): the alpha check decodes it.
+  if (std::system((python() + " -c pass >/dev/null 2>&1").c_str()) == 0) {
+    const std::string cmd = python() +
+                            " -c \"import zlib,struct,sys; b=open(sys.argv[1],'rb').read(); "
+                            "l,=struct.unpack('>I',b[33:37]); "
+                            "sys.exit(0 if zlib.crc32(b[37:41+l])==struct.unpack('>I',b[41+l:45+l])[0] "
+                            "else 1)\" " +
+                            (dir / "box-sheet-1.png").string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "pHYs CRC";
+  }
+}
+
 TEST(Bundle, PartPngsAreTransparentOutsideThePieceAndOpaqueInside) {
   const fs::path dir = test::temp_dir("bundle-alpha") / "out";
+  if (std::system((python() + " -c pass >/dev/null 2>&1").c_str()) != 0)
+    GTEST_SKIP() << "python3 is not installed: the part PNG's pixels are not checked";
   devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
   const fs::path out = dir.parent_path() / "alpha.txt";
   const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/png_alpha.py").string() + " " +

@@ -111,3 +111,28 @@ TEST(CliUnfold, EveryTrickyMeshUnfolds) {
     EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.err;
   }
 }
+
+TEST(CliUnfold, SeamListsUseTheFilesOwnVertexNumbers) {
+  const fs::path dir = test::temp_dir("cli-seams");
+  const std::string mesh = test::example_mesh("bob_128.obj").string();
+  // The first face of bob_128.obj as written, 1-based: all three of its edges are edges of the file.
+  std::ifstream in(mesh);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("f ", 0) != 0) {
+  }
+  std::istringstream face(line.substr(2));
+  int a = 0, b = 0, c = 0;
+  face >> a >> b >> c;
+  std::ofstream(dir / "cut.txt") << a << " " << b << "\n" << b << " " << c << "\n";
+  auto run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net.obj").string(), "--cut",
+                                (dir / "cut.txt").string(), "--json", "-q"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // Counted from 0, the same numbers name other vertices: not edges of the file, refused with exit 3.
+  run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net2.obj").string(), "--cut",
+                           (dir / "cut.txt").string(), "--index-base", "0", "-q"});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  EXPECT_NE(run.err.find("cut.txt: line 1: " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir / "net2.obj"));
+}

@@ -157,6 +157,22 @@ TEST(Dxf, LabelsAreStrokesWhereTheTextIsPrinted) {
   }
 }
 
+TEST(Dxf, PartLettersAndSheetFurnitureAreLabelsAndHintsAreLeftOut) {
+  EXPECT_EQ(devices::dxf_layer(PathRole::Piece), "LABEL");
+  EXPECT_EQ(devices::dxf_layer(PathRole::Sheet), "LABEL");
+  EXPECT_EQ(devices::dxf_layer(PathRole::Hint), "");
+  Sheet s;
+  s.size_mm = {100, 100};
+  s.texts.push_back({"B", {40, 60}, 8, 0, PathRole::Piece, 1});
+  s.texts.push_back({"3", {20, 20}, 3, 0, PathRole::Hint, -1});
+  const auto g = parse(dxf_document(s, {&font()}));
+  const auto lines = polylines(g);
+  ASSERT_FALSE(lines.empty());
+  for (const auto& l : lines)
+    EXPECT_EQ(l.layer, "LABEL");
+  EXPECT_EQ(declared_layers(g).size(), 6u);
+}
+
 TEST(Dxf, TextsWithoutAFontAreAnErrorNotSilentlyDropped) {
   const Sheet s = test::two_piece_sheet();
   EXPECT_THROW(dxf_document(s, {}), OutputError);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -44,6 +45,7 @@ std::string sheet_stem(const BundleOptions& o, std::size_t i) {
 // A part of a sheet: the closed cut outlines of one piece (its outline with tabs, and its holes).
 struct Part {
   int piece = -1;
+  std::string name;  // the part letter printed on it (layout's Piece text), else its number from 1
   std::vector<const Path*> outlines;
   Box2 box_mm;
 };
@@ -59,13 +61,28 @@ std::vector<Part> sheet_parts(const Sheet& sheet) {
       part.box_mm.add(q);
   }
   std::vector<Part> parts;
-  for (auto& [piece, part] : by_piece)
+  for (auto& [piece, part] : by_piece) {
+    part.name = std::to_string(piece + 1);
+    for (const Text& t : sheet.texts) {
+      // Only a name every file system and cutting program takes; letters are A..Z, AA.. in practice.
+      const bool plain =
+          !t.text.empty() && t.text.size() <= 8 &&
+          std::all_of(t.text.begin(), t.text.end(), [](unsigned char c) { return std::isalnum(c) != 0; });
+      if (t.role == PathRole::Piece && t.piece == piece && plain) {
+        part.name = t.text;
+        break;
+      }
+    }
+    // Two parts printed with the same letter would write one file twice: numbers keep them apart.
+    if (std::any_of(parts.begin(), parts.end(), [&](const Part& p) { return p.name == part.name; }))
+      part.name = std::to_string(piece + 1);
     parts.push_back(std::move(part));
+  }
   return parts;
 }
 
-std::string part_file(const BundleOptions& o, std::size_t sheet, int piece) {
-  return sheet_stem(o, sheet) + "-part-" + std::to_string(piece + 1) + ".png";
+std::string part_file(const BundleOptions& o, std::size_t sheet, const Part& part) {
+  return sheet_stem(o, sheet) + "-part-" + part.name + ".png";
 }
 
 std::array<int, 2> part_size_px(const Part& part, double dpi) {
@@ -100,7 +117,7 @@ std::string part_png(const SurfacePtr& sheet_image, const Part& part, double dpi
   std::ostringstream out;
   if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS || !detail::encode_png(surface.get(), out))
     throw OutputError(file, "cannot render the part");
-  return out.str();
+  return detail::with_resolution(out.str(), dpi);
 }
 
 // File names the README of an earlier bundle in `dir` lists (empty when there is none).
@@ -203,8 +220,8 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
     for (const Part& part : sheet_parts(s)) {
       const auto ppx = part_size_px(part, dpi);
       files.push_back(
-          {part_file(options, i, part.piece),
-           n + "part " + std::to_string(part.piece + 1) + " for Print Then Cut, " +
+          {part_file(options, i, part),
+           n + "part " + part.name + " for Print Then Cut, " +
                size_text(part.box_mm.max - part.box_mm.min + Vec2{2 * kPartPadMm, 2 * kPartPadMm}) + " (" +
                std::to_string(ppx[0]) + " x " + std::to_string(ppx[1]) + " px), top-left at (" +
                fixed(part.box_mm.min.x - kPartPadMm, 1) + ", " + fixed(part.box_mm.min.y - kPartPadMm, 1) +
@@ -282,7 +299,7 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
     if (!detail::write_png(png, s, options.render, error))
       throw OutputError((dir / (stem + ".png")).string(), error);
     const std::string png_bytes = png.str();
-    open(stem + ".png") << png_bytes;
+    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
     open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
     detail::write_svg(open(stem + ".svg"), s, options.render, cap_ratio);
 
@@ -290,7 +307,7 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
     if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
       throw OutputError((dir / (stem + ".png")).string(), "cannot read back the sheet's print for its parts");
     for (const Part& part : sheet_parts(s)) {
-      const std::string name = part_file(options, i, part.piece);
+      const std::string name = part_file(options, i, part);
       open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
     }
   }

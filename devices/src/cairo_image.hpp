@@ -24,4 +24,9 @@ SurfacePtr decode_png(const std::string& bytes);
 /// The PNG bytes of `surface`; false when Cairo fails.
 bool encode_png(cairo_surface_t* surface, std::ostream& out);
 
+/// `png` with a pHYs chunk saying `dpi`, so that programs which honour it (cutting software, image
+/// viewers, print dialogs) open the image at its physical size; Cairo writes none. `png` unchanged when
+/// it is not a PNG starting with IHDR.
+std::string with_resolution(const std::string& png, double dpi);
+
 }  // namespace foldkit::devices::detail

@@ -190,6 +190,9 @@ void write_entities(GroupWriter& g, const std::vector<Polyline>& lines) {
 
 std::string dxf_layer(PathRole role) {
   if (role == PathRole::Hint) return "";
+  // Part letters and sheet furniture are text a cutter must not cut: in a cutting program they are one
+  // more thing to switch off, so they join the labels rather than add layers.
+  if (role == PathRole::Piece || role == PathRole::Sheet) return "LABEL";
   std::string name = role_name(role);
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
   return name;

@@ -60,9 +60,12 @@ def key(pts):
     return tuple(round(c, 1) for p in pts[:2] for c in p)
 
 
+def deviation(a, b):
+    return max(max(abs(p[0] - q[0]), abs(p[1] - q[1])) for p, q in zip(a, b))
+
+
 def same(a, b):
-    return len(a) == len(b) and all(abs(p[0] - q[0]) <= TOLERANCE_MM and abs(p[1] - q[1]) <= TOLERANCE_MM
-                                   for p, q in zip(a, b))
+    return len(a) == len(b) and deviation(a, b) <= TOLERANCE_MM
 
 
 def main():
@@ -76,7 +79,7 @@ def main():
     for name in ["CUT", "MOUNTAIN", "VALLEY", "TAB", "LABEL", "REGMARK"]:
         if name not in layers:
             problems.append(f"layer {name} is not declared")
-    compared = 0
+    compared, worst = 0, 0.0
     for role in ROLES:
         want = [([(x, -y) for x, y in pts], closed) for pts, closed in svg.get(role, [])]
         have = list(dxf.get(role.upper(), []))
@@ -98,6 +101,7 @@ def main():
                 continue
             used.add(match)
             compared += 1
+            worst = max(worst, deviation(pts, have[match][0]))
     strokes = dxf.get("LABEL", [])
     if texts and not strokes:
         problems.append(f"{texts} label texts in the SVG, no strokes on layer LABEL")
@@ -110,7 +114,8 @@ def main():
                     break
     for p in problems:
         print(p)
-    print(f"compared {compared} paths, {len(strokes)} label strokes, {len(problems)} problems")
+    print(f"compared {compared} paths (largest difference {worst:.4f} mm), {len(strokes)} label strokes, "
+          f"{len(problems)} problems")
     sys.exit(1 if problems else 0)
 
 

@@ -184,7 +184,37 @@ void check_face_limit(std::uint64_t triangles, int face_limit, const std::string
                                std::to_string(face_limit) + " (decimate the mesh first)");
 }
 
-void check_obj_text(const std::string& text, const std::string& name, int face_limit) {
+// An OBJ `l v1 v2 ...` element (corners may be "v/vt", negative numbers count back from the last
+// vertex): each segment is a seam between two file vertices.
+void read_obj_line_element(const char* q, const char* eol, long vertices, const std::string& name, int line,
+                           std::vector<FileEdge>& seams) {
+  const auto where = " (line " + std::to_string(line) + ")";
+  std::vector<int> corners;
+  while (true) {
+    while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
+      ++q;
+    if (q == eol || *q == '#') break;
+    char* stop = nullptr;
+    const long idx = std::strtol(q, &stop, 10);
+    if (stop == q || (stop < eol && *stop != '/' && *stop != ' ' && *stop != '\t' && *stop != '\r'))
+      throw InputError(name, "unparsable line element corner" + where);
+    const long resolved = idx < 0 ? vertices + idx + 1 : idx;
+    if (resolved < 1 || resolved > vertices)
+      throw InputError(name, "line element references vertex " + std::to_string(idx) + " (only " +
+                                 std::to_string(vertices) + " vertices so far)" + where);
+    corners.push_back(static_cast<int>(resolved - 1));
+    q = stop;
+    while (q < eol && *q != ' ' && *q != '\t' && *q != '\r')
+      ++q;
+  }
+  if (corners.size() < 2) throw InputError(name, "line element with fewer than 2 vertices" + where);
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i)
+    seams.push_back({{corners[i], corners[i + 1]}, line});
+}
+
+// Returns the seams the file marks with `l` (line) elements, which OpenMesh's reader skips.
+std::vector<FileEdge> check_obj_text(const std::string& text, const std::string& name, int face_limit) {
+  std::vector<FileEdge> seams;
   // Pointer scanning, not iostreams: this pass runs over every byte of files up to the size limit.
   // std::string keeps a terminating NUL, so strtod/strtol stop at the end of the buffer too.
   const char* p = text.c_str();
@@ -208,7 +238,7 @@ void check_obj_text(const std::string& text, const std::string& name, int face_l
     const char* q = p;
     p = eol + 1;
     const std::string_view tag = next_token(q, eol);
-    if (tag != "v" && tag != "f") continue;
+    if (tag != "v" && tag != "f" && tag != "l") continue;
     const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
     if (tag == "v") {
       ++vertices;
@@ -228,6 +258,8 @@ void check_obj_text(const std::string& text, const std::string& name, int face_l
           throw InputError(name, "vertex " + std::to_string(vertices) + ": coordinate out of range '" +
                                      std::string(tok.substr(0, 32)) + "'" + where());
       }
+    } else if (tag == "l") {
+      read_obj_line_element(q, eol, vertices, name, static_cast<int>(line_no), seams);
     } else {
       int corners = 0;
       for (std::string_view tok = next_token(q, eol); !tok.empty(); tok = next_token(q, eol)) {
@@ -248,6 +280,7 @@ void check_obj_text(const std::string& text, const std::string& name, int face_l
       check_face_limit(triangles, face_limit, name);
     }
   }
+  return seams;
 }
 
 // A binary STL is an 80-byte header, a 32-bit triangle count and 50 bytes per triangle: the size must
@@ -592,10 +625,13 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   detail::RepairOptions repair;
   std::vector<std::string> reader_notes;
   PolygonSoup soup;
+  LoadedMesh out;
+  // The first vertex number in the format's own face lists (glTF indices count from 0 too).
+  out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
   if (gltf) {
     soup = detail::read_gltf(path, name, options.max_file_bytes, reader_notes);
   } else if (ext == ".obj") {
-    check_obj_text(bytes, name, options.face_limit);
+    out.file_seams = check_obj_text(bytes, name, options.face_limit);
   } else if (ext == ".stl") {
     if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
     repair.weld_all = true;
@@ -635,9 +671,10 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
     throw InputError(name, std::to_string(triangles) + " triangles, over the limit of " +
                                std::to_string(options.face_limit) + " (decimate the mesh first)");
 
-  LoadedMesh out;
   out.original_faces = static_cast<int>(soup.polygons.size());
-  out.mesh = detail::repair_soup(std::move(soup), name, repair, out.notes);
+  detail::Repaired repaired = detail::repair_soup(std::move(soup), name, repair, out.notes);
+  out.mesh = std::move(repaired.mesh);
+  out.origin = std::move(repaired.origin);
   out.notes.insert(out.notes.end(), reader_notes.begin(), reader_notes.end());
   if (ext == ".stl")
     out.notes.insert(out.notes.begin(),
@@ -647,6 +684,7 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   if (options.max_faces && out.mesh.num_faces() > *options.max_faces) {
     const int before = out.mesh.num_faces();
     out.mesh = decimate(out.mesh, *options.max_faces);
+    out.origin = {};  // no vertex of the file is kept as it was
     out.notes.push_back("decimated from " + std::to_string(before) + " to " +
                         std::to_string(out.mesh.num_faces()) + " faces (quadric error)");
   }

@@ -122,6 +122,19 @@ EdgeFaces edge_faces(const std::vector<Tri>& tris) {
   return EdgeFaces(tris);
 }
 
+// The file's polygon edges as sorted (smaller, larger) pairs, before any repair: what a user can name.
+std::vector<std::array<int, 2>> polygon_edges(const std::vector<std::vector<int>>& polygons) {
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& poly : polygons)
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const int a = poly[i], b = poly[(i + 1) % poly.size()];
+      if (a != b) edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
 // Twice the area over the squared longest edge (the height over the length) below which a triangle counts
 // as zero-area: a 0.01 mm bump on a 1 m edge, below anything paper can show, yet above the rounding of
 // a midpoint printed with 6 significant digits (tricky/degenerate.obj has one at 4.5e-6).
@@ -241,7 +254,8 @@ std::size_t orient_consistently(std::vector<Tri>& tris, const EdgeFaces& map, co
 // Indexed files often repeat a vertex along a seam (texture or normal splits), which would leave the
 // seam cut open. Coincident vertices on boundary edges are welded, but only when the welded mesh stays
 // edge-manifold and orientable: the file's own connectivity wins over a weld that would break it.
-std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri>& tris) {
+std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri>& tris,
+                                std::vector<int>& alias) {
   const EdgeFaces map = edge_faces(tris);
   std::map<std::array<double, 3>, int> first;
   std::vector<int> remap(points.size());
@@ -275,14 +289,16 @@ std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri
     return 0;
   }
   tris = std::move(trial);
+  for (std::size_t v = 0; v < remap.size(); ++v)
+    if (remap[v] != static_cast<int>(v)) alias[v] = remap[v];
   return welded;
 }
 
 // Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
 // collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
 // opposite edge is removed by flipping that edge with the neighbour across it.
-std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, const std::string& name,
-                             TriOrigin& origin) {
+std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, std::vector<int>& alias,
+                             const std::string& name, TriOrigin& origin) {
   std::size_t fixed = 0;
   for (int pass = 0; pass < 32; ++pass) {
     std::vector<int> degenerate;
@@ -345,6 +361,7 @@ std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, 
           for (int& v : tris[g])
             if (v == w) v = u;
         }
+        alias[w] = u;
         for (int g : vertex_faces[u])
           touched[g] = 1;
         continue;
@@ -490,8 +507,8 @@ void attach_attributes(const PolygonSoup& soup, const TriOrigin& origin, Mesh& m
 
 }  // namespace
 
-Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
-                 std::vector<std::string>& notes) {
+Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
+                     std::vector<std::string>& notes) {
   const int nv = static_cast<int>(soup.vertices.size());
   for (int v = 0; v < nv; ++v) {
     const Vec3 p = soup.vertices[v];
@@ -513,8 +530,12 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   }
   if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
 
+  Repaired out;
+  out.origin.file_edges = polygon_edges(soup.polygons);
   std::vector<int> file_index(nv);
   std::iota(file_index.begin(), file_index.end(), 0);
+  // alias[p]: the point that replaced point p in every face (welds, collapses); p itself if none.
+  std::vector<int> alias = file_index;
   if (options.weld_all) {
     // The caller reports STL welding as corners -> vertices: OpenMesh's STL reader already merges some,
     // this makes it exact whatever the reader did.
@@ -527,6 +548,7 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
     for (auto& poly : soup.polygons)
       for (int& v : poly)
         v = remap[v];
+    alias = remap;
   }
 
   check_attributes(soup, name);
@@ -564,7 +586,7 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   std::vector<Tri> tris = triangulate_all(soup, notes, origin);
   std::vector<Vec3> points = std::move(soup.vertices);
   if (!options.weld_all) {
-    if (const std::size_t seams = weld_boundary_seams(points, tris); seams > 0)
+    if (const std::size_t seams = weld_boundary_seams(points, tris, alias); seams > 0)
       notes.push_back("welded " + plural(seams, "coincident vertex") + " along open seams");
   }
 
@@ -573,7 +595,7 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   if (const std::size_t flips = orient_consistently(tris, map, name, &origin); flips > 0)
     notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
 
-  if (const std::size_t fixed = remove_zero_area(points, tris, name, origin); fixed > 0)
+  if (const std::size_t fixed = remove_zero_area(points, tris, alias, name, origin); fixed > 0)
     notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
   if (tris.empty()) throw InputError(name, "every face has zero area");
   if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
@@ -587,9 +609,13 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
       if (new_index[v] < 0) {
         new_index[v] = static_cast<int>(used.size());
         used.push_back(points[v]);
+        out.origin.file_vertex.push_back(file_index[v]);
       }
       v = new_index[v];
     }
+  out.origin.merged_into.resize(nv);
+  for (int v = 0; v < nv; ++v)
+    out.origin.merged_into[v] = find_root(alias, v);
 
   // Closed components are turned so their signed volume is positive (normals outward).
   const int nf = static_cast<int>(tris.size());
@@ -625,9 +651,9 @@ Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions&
   if (turned > 0) notes.push_back("turned " + plural(turned, "closed component") + " outward");
   if (components > 1)
     notes.push_back(std::to_string(components) + " connected components: unfolded separately");
-  Mesh mesh = make_mesh(std::move(used), std::move(tris), name);
-  attach_attributes(soup, origin, mesh);
-  return mesh;
+  out.mesh = make_mesh(std::move(used), std::move(tris), name);
+  attach_attributes(soup, origin, out.mesh);
+  return out;
 }
 
 }  // namespace foldkit::unfold::detail

@@ -7,6 +7,7 @@
 
 #include "foldkit/geom/vec.hpp"
 #include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
 
 namespace foldkit::unfold::detail {
 
@@ -27,10 +28,16 @@ struct RepairOptions {
   bool weld_all = false;
 };
 
+/// A repaired mesh and how the soup's vertices became its vertices.
+struct Repaired {
+  Mesh mesh;
+  VertexOrigin origin;
+};
+
 /// Validates and repairs a soup into a Mesh, appending one note per change made. Throws InputError(name,
 /// ...).
-Mesh repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
-                 std::vector<std::string>& notes);
+Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
+                     std::vector<std::string>& notes);
 
 /// Splits a simple polygon (given by 3D points, possibly non-planar or non-convex) into triangles of
 /// indices into `points`, keeping its orientation; avoids slivers by clipping the fattest ear first.

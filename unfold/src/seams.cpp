@@ -21,7 +21,7 @@ std::string edge_name(const std::array<int, 2>& v) {
 
 }  // namespace
 
-std::vector<std::array<int, 2>> read_edge_list(const std::filesystem::path& path) {
+std::vector<FileEdge> read_edge_list(const std::filesystem::path& path, int index_base) {
   // The same checks as a mesh file: `--cut /dev/zero` or a FIFO would otherwise be read for ever.
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -34,7 +34,7 @@ std::vector<std::array<int, 2>> read_edge_list(const std::filesystem::path& path
                                         std::to_string(kMaxEdgeListBytes) + " bytes for an edge list");
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), "cannot open the edge list");
-  std::vector<std::array<int, 2>> edges;
+  std::vector<FileEdge> edges;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
@@ -48,12 +48,55 @@ std::vector<std::array<int, 2>> read_edge_list(const std::filesystem::path& path
     }
     if (!(fields >> b) || (fields >> rest))
       throw InputError(path.string(), "line " + std::to_string(number) + ": expected two vertex indices");
-    if (a < 0 || b < 0 || a > 2'000'000'000 || b > 2'000'000'000)
-      throw InputError(path.string(), "line " + std::to_string(number) + ": vertex index out of range");
-    edges.push_back({static_cast<int>(a), static_cast<int>(b)});
+    if (a < index_base || b < index_base || a > 2'000'000'000 || b > 2'000'000'000)
+      throw InputError(path.string(), "line " + std::to_string(number) +
+                                          ": vertex number out of range (the "
+                                          "file's vertices are numbered from " +
+                                          std::to_string(index_base) + ")");
+    edges.push_back({{static_cast<int>(a - index_base), static_cast<int>(b - index_base)}, number});
   }
   if (in.bad()) throw InputError(path.string(), "read error");
   return edges;
+}
+
+std::vector<std::array<int, 2>> to_mesh_edges(const LoadedMesh& loaded, const std::vector<FileEdge>& edges,
+                                              const std::string& list_file, int index_base) {
+  if (edges.empty()) return {};
+  const VertexOrigin& origin = loaded.origin;
+  const Mesh& mesh = loaded.mesh;
+  if (origin.file_vertex.empty())
+    throw Error(list_file + ": seams name the file's vertices, and decimation keeps none of them",
+                ExitCode::Usage);
+  // Mesh edges by the (merged) file vertices of their ends.
+  std::vector<std::pair<std::array<int, 2>, int>> by_file;
+  by_file.reserve(mesh.edges.size());
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const int a = origin.file_vertex[mesh.edges[e].v[0]], b = origin.file_vertex[mesh.edges[e].v[1]];
+    by_file.push_back({{std::min(a, b), std::max(a, b)}, e});
+  }
+  std::sort(by_file.begin(), by_file.end());
+  const int file_vertices = static_cast<int>(origin.merged_into.size());
+  std::vector<std::array<int, 2>> out;
+  for (const FileEdge& edge : edges) {
+    const std::string where = "line " + std::to_string(edge.line) + ": " +
+                              std::to_string(edge.v[0] + index_base) + "-" +
+                              std::to_string(edge.v[1] + index_base);
+    const auto refuse = [&](const std::string& why) { return InputError(list_file, where + " " + why); };
+    if (std::max(edge.v[0], edge.v[1]) >= file_vertices)
+      throw refuse("names a vertex past the last of " + loaded.mesh.name + " (" +
+                   std::to_string(file_vertices) + " vertices)");
+    const std::array<int, 2> named{std::min(edge.v[0], edge.v[1]), std::max(edge.v[0], edge.v[1])};
+    if (!std::binary_search(origin.file_edges.begin(), origin.file_edges.end(), named))
+      throw refuse("is not an edge of " + loaded.mesh.name);
+    const int a = origin.merged_into[named[0]], b = origin.merged_into[named[1]];
+    const std::array<int, 2> merged{std::min(a, b), std::max(a, b)};
+    auto it = std::lower_bound(by_file.begin(), by_file.end(), std::pair{merged, -1});
+    if (a == b || it == by_file.end() || it->first != merged)
+      throw refuse("is an edge of " + loaded.mesh.name + " that the loader removed with a zero-area face");
+    for (; it != by_file.end() && it->first == merged; ++it)
+      out.push_back(mesh.edges[it->second].v);
+  }
+  return out;
 }
 
 EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams) {

@@ -2,7 +2,7 @@
 // DXF for the cutting programs that do not open SVG (Silhouette Studio's Basic edition above all): one
 // file per sheet, AutoCAD R12 ASCII (the version every cutter program and CAD reader takes), millimetres
 // ($INSUNITS 4, $MEASUREMENT 1), one layer per role named in capitals (CUT, MOUNTAIN, VALLEY, TAB,
-// LABEL, REGMARK, …), every path a POLYLINE and every text the single strokes a pen would draw, so a
+// LABEL, REGMARK), every path a POLYLINE and every text the single strokes a pen would draw, so a
 // program without fonts still shows the labels where the print has them.
 //
 // Origin: DXF is y-up, the sheet is y-down. The DXF origin (0, 0) is the paper's top-left corner, x runs
@@ -23,8 +23,9 @@ struct DxfOptions {
   const StrokeFont* font = nullptr;
 };
 
-/// The DXF layer of a role: its name in capitals ("CUT", "MOUNTAIN", …). Empty for roles that only
-/// a print shows (hints: glue-order arrows), which the DXF leaves out.
+/// The DXF layer of a role: its name in capitals ("CUT", "MOUNTAIN", …); part letters and sheet
+/// furniture go to LABEL. Empty for roles that only a print shows (hints: glue-order arrows), which the
+/// DXF leaves out.
 std::string dxf_layer(PathRole role);
 
 /// The DXF point of a sheet point (sheet mm, y down): (x, -y), see the header comment.

@@ -1,5 +1,6 @@
 #pragma once
 // Reading meshes from OBJ, OFF, STL (ASCII and binary) and PLY files.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -22,6 +23,24 @@ struct LoadOptions {
   int face_limit = 2'000'000;
 };
 
+/// Two vertices of the mesh file named together as an edge (a seam), 0-based in the file's vertex order.
+struct FileEdge {
+  std::array<int, 2> v{};
+  int line = 0;  ///< the line that named it (1-based), for messages
+};
+
+/// How the file's vertices became the mesh's, so that edges can be named by the file's own numbers:
+/// welding merges file vertices, zero-area repair collapses edges, pinched vertices are split and unused
+/// ones dropped. Empty after decimation, which keeps no vertex of the file.
+struct VertexOrigin {
+  /// Per mesh vertex: the file vertex (0-based) it stands for.
+  std::vector<int> file_vertex;
+  /// Per file vertex: the file vertex it was merged into by welding or repair (itself if none).
+  std::vector<int> merged_into;
+  /// The edges of the file's polygons as (smaller, larger) file vertex pairs, sorted.
+  std::vector<std::array<int, 2>> file_edges;
+};
+
 /// A loaded mesh plus what the loader changed or noticed, for the user to read.
 struct LoadedMesh {
   Mesh mesh;
@@ -29,6 +48,12 @@ struct LoadedMesh {
   /// "collapsed 3 zero-area faces", "3 connected components: unfolded separately".
   std::vector<std::string> notes;
   int original_faces = 0;  ///< faces in the file, before triangulation and decimation
+  VertexOrigin origin;
+  /// Seams the file marks itself (OBJ `l` elements), one per segment of each line element.
+  std::vector<FileEdge> file_seams;
+  /// The number of the first vertex in the file's own face lists: 1 for OBJ, 0 for OFF, PLY and glTF; STL,
+  /// which has no vertex numbers, counts its distinct corners from 1 in the order they appear.
+  int index_base = 1;
 };
 
 /// Reads and validates a mesh file. Throws InputError naming the file and the problem (missing,
