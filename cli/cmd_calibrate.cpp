@@ -114,22 +114,74 @@ void store_offset(const CalibrateArgs& args, const devices::DeviceProfile& devic
       device.name.c_str(), mm_pair(offset).c_str(), file.string().c_str(), device.id.c_str());
 }
 
-void write_page_and_job(const CalibrateArgs& args, const devices::DeviceProfile& device,
-                        const devices::MediaProfile& media) {
+// The page for `device`'s marks on `paper_text`.
+layout::CalibrationPage page_for(const devices::DeviceProfile& device, const std::string& paper_text) {
   if (!device.regmarks.supported || device.protocol != devices::Protocol::Gpgl)
     throw Error(device.name + " cannot search registration marks: there is no print-and-cut to calibrate",
                 ExitCode::Device);
-  const auto paper = layout::parse_paper(args.paper);
+  const auto paper = layout::parse_paper(paper_text);
   if (!paper)
-    throw Error("--paper " + args.paper + ": unknown (" + layout::paper_names() + ")", ExitCode::Usage);
+    throw Error("--paper " + paper_text + ": unknown (" + layout::paper_names() + ")", ExitCode::Usage);
   layout::CalibrationOptions co;
   co.paper_mm = *paper;
   co.regmark.square_mm = device.regmarks.square_mm;
   co.regmark.arm_mm = device.regmarks.arm_length_mm;
   co.regmark.stroke_mm = device.regmarks.stroke_mm;
   co.regmark.inset_mm = device.regmarks.inset_mm;
-  const layout::CalibrationPage page = layout::calibration_page(co);
+  return layout::calibration_page(co);
+}
 
+struct CalibrationFiles {
+  std::string pdf, job, preview;
+};
+
+CalibrationFiles files_for(const CalibrateArgs& args, const devices::DeviceProfile& device) {
+  const std::string stem = "calibration-" + device.id;
+  CalibrationFiles f{args.pdf.empty() ? stem + ".pdf" : args.pdf,
+                     args.job.empty() ? stem + ".gpgl" : args.job,
+                     args.preview.empty() ? stem + "-cut.png" : args.preview};
+  auto ext = [](const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+  };
+  if (ext(f.preview) != ".png")
+    throw Error("--preview " + f.preview + ": the preview is a .png", ExitCode::Usage);
+  if (const std::string e = ext(f.job); e == ".plt" || e == ".hpgl" || e == ".hpg")
+    throw Error("--job " + f.job + ": " + device.name + " speaks GP-GL (use .gpgl)", ExitCode::Usage);
+  return f;
+}
+
+void print_report(const CalibrateArgs& args, const devices::DeviceProfile& device, const CalibrationFiles& f,
+                  const layout::CalibrationPage& page, std::size_t bytes, Vec2 applied) {
+  if (args.json) {
+    nlohmann::json crosses = nlohmann::json::array();
+    for (Vec2 c : page.crosses_mm)
+      crosses.push_back({c.x, c.y});
+    std::cout << nlohmann::json{{"device", device.id},   {"pdf", f.pdf},
+                                {"job", f.job},          {"preview", f.preview},
+                                {"crosses_mm", crosses}, {"applied_offset_mm", {applied.x, applied.y}},
+                                {"bytes", bytes}}
+                     .dump(2)
+              << "\n";
+    return;
+  }
+  std::printf(
+      "calibration page %s, cut job %s (%zu bytes, %zu crosses), preview %s\n"
+      "1. Print %s at 100 %% (no fit to page) and load it on the mat like any print-and-cut sheet.\n"
+      "2. Send %s to the %s (e.g. `cat %s > /dev/usb/lp0`).\n"
+      "3. At each cross read how far the PRINTED line lies right/down (+) or left/up (-) of the CUT, and\n"
+      "   store the mean: foldkit calibrate --device %s --offset DX,DYmm   (--verify cuts a page with it)\n",
+      f.pdf.c_str(), f.job.c_str(), bytes, page.crosses_mm.size(), f.preview.c_str(), f.pdf.c_str(),
+      f.job.c_str(), device.name.c_str(), f.job.c_str(), device.id.c_str());
+  if (args.verify) std::printf("this job applies the stored offset %s\n", mm_pair(applied).c_str());
+}
+
+void write_page_and_job(const CalibrateArgs& args, const devices::DeviceProfile& device,
+                        const devices::MediaProfile& media) {
+  const layout::CalibrationPage page = page_for(device, args.paper);
+  const CalibrationFiles files = files_for(args, device);
   devices::PlanOptions plan;
   plan.mat = args.mat;
   plan.regmarks = true;
@@ -150,37 +202,12 @@ void write_page_and_job(const CalibrateArgs& args, const devices::DeviceProfile&
   devices::send_job(devices::stream_bytes(stream), sim, send);
   sim.close();
 
-  const std::string stem = "calibration-" + device.id;
-  const std::string pdf = args.pdf.empty() ? stem + ".pdf" : args.pdf;
-  const std::string job_file = args.job.empty() ? stem + ".gpgl" : args.job;
-  const std::string preview = args.preview.empty() ? stem + "-cut.png" : args.preview;
-  devices::render_sheets({page.sheet}, pdf);
-  devices::render_print_and_cut(page.sheet, devices::simulated_cuts_mm(sim, device, args.mat), preview);
-  devices::FileTransport out(job_file);
+  devices::render_sheets({page.sheet}, files.pdf);
+  devices::render_print_and_cut(page.sheet, devices::simulated_cuts_mm(sim, device, args.mat), files.preview);
+  devices::FileTransport out(files.job);
   devices::send_job(devices::stream_bytes(stream), out, send);
   out.close();
-
-  if (args.json) {
-    nlohmann::json crosses = nlohmann::json::array();
-    for (Vec2 c : page.crosses_mm)
-      crosses.push_back({c.x, c.y});
-    std::cout << nlohmann::json{{"device", device.id},   {"pdf", pdf},
-                                {"job", job_file},       {"preview", preview},
-                                {"crosses_mm", crosses}, {"applied_offset_mm", {applied.x, applied.y}},
-                                {"bytes", stream.size()}}
-                     .dump(2)
-              << "\n";
-    return;
-  }
-  std::printf(
-      "calibration page %s, cut job %s (%zu bytes, %zu crosses), preview %s\n"
-      "1. Print %s at 100 %% (no fit to page) and load it on the mat like any print-and-cut sheet.\n"
-      "2. Send %s to the %s (e.g. `cat %s > /dev/usb/lp0`).\n"
-      "3. At each cross read how far the PRINTED line lies right/down (+) or left/up (-) of the CUT, and\n"
-      "   store the mean: foldkit calibrate --device %s --offset DX,DYmm   (--verify cuts a page with it)\n",
-      pdf.c_str(), job_file.c_str(), stream.size(), page.crosses_mm.size(), preview.c_str(), pdf.c_str(),
-      job_file.c_str(), device.name.c_str(), job_file.c_str(), device.id.c_str());
-  if (args.verify) std::printf("this job applies the stored offset %s\n", mm_pair(applied).c_str());
+  print_report(args, device, files, page, stream.size(), applied);
 }
 
 }  // namespace

@@ -244,6 +244,12 @@ TEST(Calibration, BadOffsetsAreUsageErrorsAndStoreNothing) {
     EXPECT_NE(run.err.find("--offset"), std::string::npos) << run.err;
   }
   EXPECT_FALSE(fs::exists(dir / "config"));
+  EXPECT_EQ(
+      test::run_foldkit({"calibrate", "--device", "cameo4", "--job", (dir / "x.plt").string()}).exit_code, 2);
+  EXPECT_EQ(
+      test::run_foldkit({"calibrate", "--device", "cameo4", "--preview", (dir / "x.svg").string()}).exit_code,
+      2);
+  EXPECT_FALSE(fs::exists(dir / "x.plt"));
   const auto hpgl = test::run_foldkit({"calibrate", "--device", "generic-hpgl"});
   EXPECT_NE(hpgl.exit_code, 0);
   EXPECT_NE(hpgl.err.find("registration marks"), std::string::npos) << hpgl.err;

@@ -49,7 +49,12 @@ TEST(FuzzRegressions, EveryRegressionFolderNamesAFuzzTarget) {
     if (!e.is_directory()) continue;
     EXPECT_NE(std::find(targets.begin(), targets.end(), e.path().filename().string()), targets.end())
         << e.path() << " is replayed by no test";
+    EXPECT_FALSE(inputs_of(e.path().filename().string()).empty()) << e.path() << " holds no input to replay";
   }
+  // The folders with checked-in findings; losing one (or its files) must fail here, not skip silently.
+  for (const std::string target :
+       {"fuzz_load_obj", "fuzz_load_off", "fuzz_load_ply", "fuzz_device_gpgl", "fuzz_device_streams"})
+    EXPECT_FALSE(inputs_of(target).empty()) << "tests/fuzz/regressions/" << target << " is missing or empty";
 }
 
 TEST(FuzzRegressions, MeshInputsEndInAnInputErrorOrLoad) {
