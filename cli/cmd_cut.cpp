@@ -17,6 +17,7 @@
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/hpgl.hpp"
 #include "foldkit/devices/plan.hpp"
+#include "foldkit/devices/printed_marks.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/devices/send.hpp"
 #include "foldkit/devices/simulated_device.hpp"
@@ -28,6 +29,7 @@
 #include "output_paths.hpp"
 #include "pipeline.hpp"
 #include "profile_options.hpp"
+#include "sim_faults.hpp"
 #include "user_config.hpp"
 
 namespace foldkit::cli {
@@ -80,43 +82,6 @@ std::string lower_ext(const std::string& path) {
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
-}
-
-// --sim-fault NAME[=BYTES]: what the simulated device is told to do wrong (for trying out error handling).
-devices::SimFaults parse_faults(const std::vector<std::string>& specs) {
-  devices::SimFaults f;
-  for (const std::string& spec : specs) {
-    const auto eq = spec.find('=');
-    const std::string name = spec.substr(0, eq);
-    std::optional<std::size_t> bytes;
-    if (eq != std::string::npos) {
-      try {
-        bytes = std::stoul(spec.substr(eq + 1));
-      } catch (const std::exception&) {
-        throw Error("--sim-fault " + spec + ": expected a byte count after '='", ExitCode::Usage);
-      }
-    }
-    const bool takes_bytes = name == "disconnect" || name == "stall";
-    if (takes_bytes != bytes.has_value())
-      throw Error("--sim-fault " + spec +
-                      (takes_bytes ? ": give the byte count, e.g. " + name + "=500" : ": takes no value"),
-                  ExitCode::Usage);
-    if (name == "not-ready")
-      f.not_ready = true;
-    else if (name == "no-media")
-      f.no_media = true;
-    else if (name == "marks-not-found")
-      f.marks_not_found = true;
-    else if (name == "disconnect")
-      f.disconnect_after = bytes;
-    else if (name == "stall")
-      f.stall_after = bytes;
-    else
-      throw Error("--sim-fault " + spec +
-                      ": unknown fault (not-ready, no-media, marks-not-found, disconnect=N, stall=N)",
-                  ExitCode::Usage);
-  }
-  return f;
 }
 
 struct SheetReport {
@@ -228,13 +193,15 @@ void setup_cut(CLI::App& app) {
     layout::RegMarkOptions& marks = layout_options.regmark;
     devices::RegMarkSetup& device_marks = device.regmarks;
     for (auto [option, printed, profiled] :
-         {std::tuple{"--regmark-square", &marks.square_mm, &device_marks.square_mm},
-          std::tuple{"--regmark-arm", &marks.arm_mm, &device_marks.arm_length_mm},
+         {std::tuple{"--regmark-arm", &marks.arm_mm, &device_marks.arm_length_mm},
           std::tuple{"--regmark-inset", &marks.inset_mm, &device_marks.inset_mm}})
       if (cmd->count(option) > 0)
         *profiled = *printed;
       else
         *printed = *profiled;
+    // The square is the sensor's, not a setting: another size is printed as asked and then refused by
+    // the planner, before anything is sent.
+    if (cmd->count("--regmark-square") == 0) marks.square_mm = device_marks.square_mm;
     marks.stroke_mm = device_marks.stroke_mm;
     ProgressLine line(!args->quiet && !args->json);
     PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
@@ -298,6 +265,7 @@ void setup_cut(CLI::App& app) {
       send.protocol = job.protocol;
       send.estimated_s = job.stats.estimated_s;
       send.ready_timeout = std::chrono::milliseconds(std::lround(args->ready_timeout_s * 1000));
+      if (job.protocol == devices::Protocol::Gpgl) send.abort_tail = devices::gpgl_abort_tail(job);
       const std::string sheet_label =
           sheets.size() > 1 ? "sheet " + std::to_string(i + 1) + "/" + std::to_string(sheets.size()) + ": "
                             : "";
@@ -322,6 +290,8 @@ void setup_cut(CLI::App& app) {
         devices::SimOptions so;
         so.mat = args->mat;
         so.faults = faults;
+        so.sheet_mm = sheets[i].size_mm;
+        so.printed_marks = devices::printed_marks(sheets[i]);
         for (const devices::Pass& p : job.passes)
           so.mounted[p.holder] = p.tool;
         auto dev = std::make_unique<devices::SimulatedDevice>(device, so);
@@ -330,7 +300,9 @@ void setup_cut(CLI::App& app) {
       } else if (!args->output.empty()) {
         // A device node is a cutter too: each sheet after the first needs fresh media.
         if (devices::resolve_output(args->output).kind == devices::OutputKind::Node) wait_for_sheet(i);
-        transport = std::make_unique<devices::FileTransport>(sheet_output_path(args->output, i));
+        // A device node that stops taking data is a busy cutter: the same bound as over USB.
+        transport =
+            std::make_unique<devices::FileTransport>(sheet_output_path(args->output, i), send.ready_timeout);
       } else {
         if (device.usb_vendor == 0)
           throw DeviceError(
@@ -340,15 +312,34 @@ void setup_cut(CLI::App& app) {
         devices::UsbSelector sel;
         sel.id = {device.usb_vendor, device.usb_product, device.name};
         devices::UsbOptions usb;
-        usb.gpgl_status = device.protocol == devices::Protocol::Gpgl;  // HP-GL cutters have no ESC 0x05
+        // HP-GL cutters and Graphtec's own GP-GL have no ESC 0x05 status query.
+        usb.gpgl_status =
+            device.protocol == devices::Protocol::Gpgl && device.gpgl_family != devices::GpglFamily::Graphtec;
+        usb.ready_timeout = send.ready_timeout;
         transport = devices::open_usb_cutter(sel, usb);
       }
       rep.target = transport->describe();
       std::atomic<bool> cancel{false};
       const ScopedCancel cancel_on_signal(cancel);
       send.cancel = &cancel;
-      const devices::SendResult result = devices::send_job(devices::stream_bytes(stream), *transport, send);
-      transport->close();
+      devices::SendResult result;
+      try {
+        result = devices::send_job(devices::stream_bytes(stream), *transport, send);
+        transport->close();
+      } catch (const DeviceError& e) {
+        if (!sim) throw;
+        // The simulated device shows how far a real one would have got, and why it stopped.
+        line.clear();
+        std::string what = e.what();
+        if (!sim->marks_problem().empty()) what += " (" + sim->marks_problem() + ")";
+        if (!preview.empty()) {
+          const auto partial = sheet_output_path(preview, i);
+          sim->render(partial);
+          what += "; " + std::to_string(sim->strokes().size()) + " strokes were done, partial picture in " +
+                  partial.string();
+        }
+        throw DeviceError(what);
+      }
       line.clear();
       if (result.cancelled) {
         const bool term = cancel_on_signal.signal() == SIGTERM;
@@ -362,6 +353,9 @@ void setup_cut(CLI::App& app) {
                     term ? ExitCode::Terminated : ExitCode::Interrupted);
       }
       if (sim) {
+        if (sim->model().from_profile)
+          rep.notes.push_back("no built-in model of the " + device.name +
+                              ": the simulated device checked the job against its profile only");
         rep.simulated_cut_mm = sim->down_length_mm();
         rep.simulated_travel_mm = sim->travel_mm();
         if (!preview.empty()) sim->render(sheet_output_path(preview, i));

@@ -62,6 +62,7 @@ void setup_profiles(CLI::App& app) {
                         {"holders", d.holders},
                         {"tools", tools(d)},
                         {"regmarks", d.regmarks.supported},
+                        {"sources", d.sources},
                         {"file", d.file.string()}});
       }
       for (const auto& m : set.media)

@@ -11,6 +11,7 @@ void setup_bench(CLI::App& app);
 void setup_cut(CLI::App& app);
 void setup_profiles(CLI::App& app);
 void setup_devices(CLI::App& app);
+void setup_sim(CLI::App& app);
 void setup_calibrate(CLI::App& app);
 
 }  // namespace foldkit::cli

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   foldkit::cli::setup_cut(app);
   foldkit::cli::setup_profiles(app);
   foldkit::cli::setup_devices(app);
+  foldkit::cli::setup_sim(app);
   foldkit::cli::setup_calibrate(app);
   try {
     app.parse(argc, argv);

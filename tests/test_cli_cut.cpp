@@ -200,6 +200,57 @@ TEST(CliCut, StopsCleanlyOnCtrlC) {
   EXPECT_NE(err.find("the tool was raised and the job ended"), std::string::npos) << err;
 }
 
+// `foldkit sim`: a stream written by cut (or by another program) replayed on the machine's model.
+TEST(CliSim, ReplaysAWrittenJobAndReportsWhatItWouldCut) {
+  const fs::path dir = foldkit::test::temp_dir("cli-sim");
+  ASSERT_EQ(run_foldkit(dir, {"cut", mesh(), "--device", "portrait3", "-o", "job.gpgl", "-q"}).exit_code, 0);
+  const CliRun r = run_foldkit(dir, {"sim", "job.gpgl", "--device", "portrait3", "--preview", "sim.png"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("checked against its built-in machine model"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" strokes, tool down "), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "sim.png"));
+}
+
+TEST(CliSim, RefusesAStreamWithTheWrongMatAndDrawsThePartialPicture) {
+  const fs::path dir = foldkit::test::temp_dir("cli-sim-wrong");
+  ASSERT_EQ(run_foldkit(dir, {"cut", mesh(), "--device", "portrait3", "-o", "job.gpgl", "-q"}).exit_code, 0);
+  // The stream a Cameo profile writes: TG1 on a machine whose 8x12 mat is TG3.
+  std::string job = slurp(dir / "job.gpgl");
+  const auto tg = job.find("TG3\x03");
+  ASSERT_NE(tg, std::string::npos);
+  job[tg + 2] = '1';
+  std::ofstream(dir / "wrong.gpgl", std::ios::binary) << job;
+  const CliRun r = run_foldkit(dir, {"sim", "wrong.gpgl", "--device", "portrait3", "--preview", "part.png"});
+  EXPECT_EQ(r.exit_code, 6) << r.err;
+  EXPECT_NE(r.err.find("job expects mat TG1 but mat 8x12 (TG3) is loaded"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("0 strokes were done, partial picture in part.png"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "part.png"));
+}
+
+TEST(CliSim, ReportsHowFarAFaultyRunGot) {
+  const fs::path dir = foldkit::test::temp_dir("cli-sim-fault");
+  ASSERT_EQ(run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "-o", "job.gpgl", "-q"}).exit_code, 0);
+  const CliRun r = run_foldkit(
+      dir, {"sim", "job.gpgl", "--device", "cameo4", "--sim-fault", "disconnect=3000", "--preview", "p.svg"});
+  EXPECT_EQ(r.exit_code, 6) << r.err;
+  EXPECT_NE(r.err.find("strokes were done, partial picture in p.svg"), std::string::npos) << r.err;
+}
+
+TEST(CliCut, TellsTheDeviceTheMarksThatWerePrintedAndRefusesSquaresItCannotFind) {
+  const fs::path dir = foldkit::test::temp_dir("cli-regmark-geometry");
+  ASSERT_EQ(run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "--regmark-arm", "15mm",
+                              "-o", "job.gpgl", "-q"})
+                .exit_code,
+            0);
+  EXPECT_NE(slurp(dir / "job.gpgl").find("TB51,300\x03"), std::string::npos);
+  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--regmarks", "--regmark-square",
+                                     "7mm", "-o", "bad.gpgl", "-q"});
+  EXPECT_EQ(r.exit_code, 6) << r.err;
+  EXPECT_NE(r.err.find("finds only 5.00 mm registration squares; the sheet's is 7.00 mm"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "bad.gpgl"));
+}
+
 }  // namespace
 
 TEST(CliCut, TheRegistrationMarksPrintedAreTheOnesTheDeviceIsToldToFind) {

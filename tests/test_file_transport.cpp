@@ -13,6 +13,7 @@
 
 #include "foldkit/devices/file_transport.hpp"
 #include "foldkit/devices/job.hpp"
+#include "foldkit/devices/send.hpp"
 #include "foldkit/error.hpp"
 #include "test_paths.hpp"
 
@@ -116,6 +117,55 @@ TEST(FileTransport, WritesToACharacterDevice) {
   t.write(stream_bytes("IN;"));
   t.close();
   EXPECT_EQ(t.describe(), "device node /dev/null");
+}
+
+TEST(FileTransport, RefusesPrintAndCutThroughANodeItCannotReadBeforeSendingAnything) {
+  // A FIFO is written one way only: the mark search's reply could never be read, so the blade would cut
+  // whether the marks were found or not.
+  const auto fifo = test::temp_dir("ft-regmarks") / "lp0";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  FileTransport t(fifo);
+  EXPECT_TRUE(t.drives_device());
+  EXPECT_FALSE(t.reads_replies());
+  const std::string stream =
+      "\x1b\x04TB99\x03TB123,100,100,0,0\x03M0,0\x03"
+      "D10,10\x03";
+  SendOptions o;
+  o.poll_interval = std::chrono::milliseconds(1);
+  try {
+    send_job(stream_bytes(stream), t, o);
+    FAIL() << "print-and-cut went to a node that cannot be read";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("print-and-cut needs the registration-mark search's reply"),
+              std::string::npos)
+        << e.what();
+  }
+  char buf[64];
+  EXPECT_LE(::read(reader, buf, sizeof buf), 0);  // nothing was sent
+  ::close(reader);
+}
+
+TEST(FileTransport, ReadsRepliesFromACharacterDeviceWithinTheQueryTimeout) {
+  // /dev/null reads as end of file: a node that can be read but never answers.
+  FileTransport t("/dev/null");
+  EXPECT_TRUE(t.reads_replies());
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THROW(t.request(stream_bytes("FG\x03"), std::chrono::milliseconds(200)), DeviceError);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+}
+
+TEST(FileTransport, WritesAPrintAndCutJobToARegularFileForLater) {
+  const auto path = test::temp_dir("ft-regfile") / "job.gpgl";
+  FileTransport t(path);
+  EXPECT_FALSE(t.drives_device());
+  const std::string stream =
+      "\x1b\x04TB123,100,100,0,0\x03M0,0\x03"
+      "D10,10\x03";
+  send_job(stream_bytes(stream), t, {});
+  t.close();
+  EXPECT_TRUE(std::filesystem::exists(path));
 }
 
 }  // namespace

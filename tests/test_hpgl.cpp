@@ -5,6 +5,8 @@
 #include <fstream>
 #include <regex>
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "foldkit/devices/command_parser.hpp"
@@ -75,7 +77,7 @@ TEST(Hpgl, FlipsYForABottomLeftOrigin) {
   // 130 and 110 mm; the cut starts at the corner nearest the origin, page (10, 40).
   const std::string s =
       encode_hpgl(plan_job(square(), profiles().device("test-hpgl"), profiles().medium("copy-80")));
-  EXPECT_NE(s.find("PU400,4400;PD400,5200,"), std::string::npos) << s;
+  EXPECT_NE(s.find("PU400,4400;PD400,5200;"), std::string::npos) << s;
 }
 
 TEST(Hpgl, LeavesOutTheForceCommandForDevicesThatTakeItFromThePanel) {
@@ -133,6 +135,52 @@ TEST(Hpgl, Hp2xxCountsOnlyTheForceCommandsAsIgnored) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(*err, m, std::regex("HPGL command\\(s\\) ignored: ([0-9]+)"))) << *err;
   EXPECT_EQ(std::stoul(m[1]), fs);
+}
+
+// --- The Roland GX-24 against the Roland writer ([FM] mod_Roland_vinyl.js, docs/plotter-protocols.md 3) --
+
+Sheet a4_corner_square() {
+  Sheet s;
+  s.size_mm = {210, 297};
+  s.paths.push_back(test::rect_path(PathRole::Cut, {10, 10}, {30, 30}, 0));
+  return s;
+}
+
+TEST(HpglRoland, SetsForceWithRolandsBangFsAndSpeedWithVs) {
+  // [FM]: PA;PA;!ST1;!FS<force>;VS<v>; the GX-24 reads !FS, not HP-GL's FS.
+  PlanOptions o;
+  o.fold_method = FoldMethod::None;
+  const std::string s = encode_hpgl(
+      plan_job(a4_corner_square(), profiles().device("roland-gx24"), profiles().medium("copy-80"), o));
+  EXPECT_EQ(s.substr(0, s.find("PU")), "IN;PA;SP1;VS10;!FS80;");
+  EXPECT_EQ(s.find(";FS"), std::string::npos);
+  EXPECT_EQ(s.substr(s.size() - 10), "PU;SP0;IN;");
+}
+
+TEST(HpglRoland, PutsTheCutOnTheSheetAtTheFrontRightOrigin) {
+  // The origin is the loaded sheet's corner: a 20 mm square 10 mm from the sheet's top-left corner lies
+  // 10..30 mm from the origin on both axes (40 PLU/mm), not 554..574 mm across the 584 mm carriage.
+  PlanOptions o;
+  o.fold_method = FoldMethod::None;
+  o.order = false;
+  const Job job =
+      plan_job(a4_corner_square(), profiles().device("roland-gx24"), profiles().medium("copy-80"), o);
+  ASSERT_EQ(job.passes.size(), 1u);
+  for (const DevicePoint& p : job.passes[0].strokes[0].points) {
+    EXPECT_GE(p.a, 400);
+    EXPECT_LE(p.a, 1200);
+    EXPECT_GE(p.b, 400);
+    EXPECT_LE(p.b, 1200);
+  }
+}
+
+TEST(Hpgl, SendsOnePointPerPenDown) {
+  const std::string s = encode_hpgl(
+      plan_job(test::two_piece_sheet(), profiles().device("test-hpgl"), profiles().medium("copy-80")));
+  for (std::size_t at = s.find("PD"); at != std::string::npos; at = s.find("PD", at + 1)) {
+    const std::string cmd = s.substr(at, s.find(';', at) - at);
+    EXPECT_EQ(std::count(cmd.begin(), cmd.end(), ','), 1) << cmd;
+  }
 }
 
 }  // namespace

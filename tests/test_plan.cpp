@@ -192,7 +192,13 @@ TEST(Plan, PlacesPrintAndCutJobsRelativeToTheTopLeftMark) {
   const Pass* cut = find_pass(job, PassKind::Cut);
   ASSERT_NE(cut, nullptr);
   EXPECT_EQ(cut->strokes[0].points[0], (DevicePoint{240, 1300}));
-  EXPECT_EQ(job.window_min, (DevicePoint{-160, -100}));
+  // The window is the machine's, set before the search; the search starts 10 mm before the mark
+  // (clamped at the machine's edge) and describes the printed marks (20 mm arms, 0.5 mm lines).
+  EXPECT_EQ(job.window_min, (DevicePoint{0, 0}));
+  EXPECT_EQ(job.regmarks->start_a, 0);
+  EXPECT_EQ(job.regmarks->start_b, 0);
+  EXPECT_EQ(job.regmarks->arm_length, 400);
+  EXPECT_EQ(job.regmarks->stroke, 10);
 }
 
 TEST(Plan, RefusesRegistrationMarksOnADeviceWithoutASensorOrASheetWithoutMarks) {

@@ -1,5 +1,6 @@
 // The simulated device: strict parsing, state, faults, rendering, and the round trip every device
 // profile must pass: sheet -> job -> bytes -> simulated device gives back the same strokes.
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 
@@ -316,6 +317,40 @@ TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
   EXPECT_NE(text.find("<svg"), std::string::npos);
   EXPECT_NE(text.find("rgb(80%,10%,10%)"), std::string::npos) << "pen strokes drawn red";
   EXPECT_THROW(dev.render(dir / "cut.pdf"), OutputError);
+}
+
+// Records how long each query may take: the reference allows 10 s for FG and TB71 (the head moves),
+// 5 s for a status reply.
+class TimeoutRecorder final : public Transport {
+ public:
+  void write(std::span<const std::byte>) override {}
+  DeviceState status() override { return DeviceState::Ready; }
+  void close() override {}
+  bool reads_replies() const override { return true; }
+  std::string describe() const override { return "recorder"; }
+  std::optional<std::vector<std::byte>> request(std::span<const std::byte> command,
+                                                std::chrono::milliseconds timeout) override {
+    std::string c(reinterpret_cast<const char*>(command.data()), command.size());
+    timeouts.emplace_back(c, timeout.count());
+    const std::string r = c == "\x1b\x05" ? "0\x03" : "    0,    0\x03";
+    std::vector<std::byte> out(r.size());
+    std::transform(r.begin(), r.end(), out.begin(), [](char ch) { return static_cast<std::byte>(ch); });
+    return out;
+  }
+  std::vector<std::pair<std::string, long>> timeouts;
+};
+
+TEST(SendJob, WaitsTenSecondsForFgAndTb71AndFiveForStatus) {
+  TimeoutRecorder t;
+  send_job(stream_bytes("\x1b\x05"
+                        "FG\x03\x1b\x04TB71\x03"
+                        "FA\x03"),
+           t, {});
+  ASSERT_EQ(t.timeouts.size(), 4u);
+  EXPECT_EQ(t.timeouts[0].second, 5000);   // ESC 05
+  EXPECT_EQ(t.timeouts[1].second, 10000);  // FG
+  EXPECT_EQ(t.timeouts[2].second, 10000);  // TB71
+  EXPECT_EQ(t.timeouts[3].second, 10000);  // FA
 }
 
 }  // namespace

@@ -24,13 +24,13 @@ struct Arity {
 // GP-GL mnemonics in the Silhouette dialect (docs/plotter-protocols.md 2.1-2.6); two-letter ones first
 // so "FX" is not read as "F" + "X".
 constexpr Arity kGpgl[] = {
-    {"FG", 0, 0, false},        {"FA", 0, 0, false}, {"TC", 0, 0, false}, {"TB", 1, 5, false},
-    {"TG", 1, 1, false},        {"FN", 1, 1, false}, {"FX", 1, 2, false}, {"FE", 1, 2, false},
-    {"FF", 3, 3, false},        {"FC", 2, 3, false}, {"FY", 1, 1, false}, {"TF", 2, 2, false},
-    {"SO", 1, 1, false},        {"FO", 1, 1, false}, {"FW", 1, 1, false}, {"M", 2, 2, true},
-    {"D", 2, kUnbounded, true}, {"J", 1, 1, false},  {"!", 1, 2, false},  {"\\", 2, 2, true},
-    {"Z", 2, 2, true},          {"L", 1, 1, false},  {"H", 0, 0, false},  {"[", 0, 0, false},
-    {"U", 0, 0, false},
+    {"FG", 0, 0, false}, {"FA", 0, 0, false}, {"TC", 0, 0, false},        {"TB", 1, 5, false},
+    {"TG", 1, 1, false}, {"FN", 1, 1, false}, {"FX", 1, 2, false},        {"FE", 1, 2, false},
+    {"FF", 3, 3, false}, {"FC", 2, 3, false}, {"FY", 1, 1, false},        {"TF", 2, 2, false},
+    {"SO", 1, 1, false}, {"FO", 1, 1, false}, {"FW", 1, 1, false},        {"TJ", 1, 1, false},
+    {"*", 2, 3, false},  {"M", 2, 2, true},   {"D", 2, kUnbounded, true}, {"J", 1, 1, false},
+    {"!", 1, 2, false},  {"\\", 2, 2, true},  {"Z", 2, 2, true},          {"L", 1, 1, false},
+    {"H", 0, 0, false},  {"[", 0, 0, false},  {"U", 0, 0, false},
 };
 
 constexpr Arity kHpgl[] = {
@@ -38,7 +38,13 @@ constexpr Arity kHpgl[] = {
     {"PU", 0, kUnbounded, true}, {"PD", 0, kUnbounded, true}, {"SP", 0, 1, false},
     {"VS", 1, 2, false},         {"FS", 1, 2, false},         {"LT", 0, 2, false},
     {"OI", 0, 0, false},         {"OS", 0, 0, false},         {"OH", 0, 0, false},
+    {"!FS", 1, 2, false},        {"!ST", 0, 1, false},  // Roland's force and (undocumented) ST [FM]
 };
+
+// HP-GL mnemonics are two letters; Roland's own start with '!' and have three.
+std::size_t mnemonic_length(std::string_view text) {
+  return !text.empty() && text[0] == '!' ? 3 : 2;
+}
 
 [[noreturn]] void fail(const char* dialect, std::size_t offset, const std::string& problem) {
   throw DeviceError(std::string(dialect) + " byte " + std::to_string(offset) + ": " + problem);
@@ -168,8 +174,9 @@ std::vector<ParsedCommand> HpglParser::feed(std::span<const std::byte> bytes) {
       if (pending_.size() - pos > kMaxHpglCommand)
         fail("HP-GL", at, "no ';' terminator within " + std::to_string(kMaxHpglCommand) + " bytes");
       // A complete mnemonic can be checked before its terminator arrives: garbage fails early.
-      if (pending_.size() - pos >= 2) {
-        const std::string_view name(pending_.data() + pos, 2);
+      const std::size_t len = mnemonic_length(std::string_view(pending_).substr(pos));
+      if (pending_.size() - pos >= len) {
+        const std::string_view name(pending_.data() + pos, len);
         bool known = false;
         for (const Arity& a : kHpgl)
           known |= name == a.name;
@@ -178,14 +185,15 @@ std::vector<ParsedCommand> HpglParser::feed(std::span<const std::byte> bytes) {
       break;
     }
     const std::string_view text(pending_.data() + pos, semi - pos);
-    if (text.size() < 2) fail("HP-GL", at, "command \"" + printable(text) + "\" is too short");
+    const std::size_t len = mnemonic_length(text);
+    if (text.size() < len) fail("HP-GL", at, "command \"" + printable(text) + "\" is too short");
     const Arity* arity = nullptr;
     for (const Arity& a : kHpgl) {
-      if (text.substr(0, 2) == a.name) arity = &a;
+      if (text.substr(0, len) == a.name) arity = &a;
     }
-    if (!arity) fail("HP-GL", at, "unknown command \"" + printable(text.substr(0, 2)) + "\"");
+    if (!arity) fail("HP-GL", at, "unknown command \"" + printable(text.substr(0, len)) + "\"");
     ParsedCommand c{at, arity->name, {}};
-    std::string_view rest = text.substr(2);
+    std::string_view rest = text.substr(len);
     while (!rest.empty()) {
       const std::size_t sep = rest.find_first_of(", ");
       c.params.push_back(parse_number("HP-GL", at, rest.substr(0, sep)));

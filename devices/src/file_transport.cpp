@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 #include "foldkit/error.hpp"
 
@@ -18,7 +19,11 @@ FileTransport::FileTransport(std::filesystem::path path, std::chrono::millisecon
   const bool exists = ::stat(path_.c_str(), &st) == 0;
   if (exists && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode))) {
     // Non-blocking so a printer that stops taking data cannot hang us; poll() bounds every wait.
-    fd_ = ::open(path_.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    // Read-write when the node allows it, so replies (the mark search's above all) can be read.
+    // Not a FIFO: read-write opens one with no reader and would read our own bytes back.
+    if (S_ISCHR(st.st_mode)) fd_ = ::open(path_.c_str(), O_RDWR | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    readable_ = fd_ >= 0;
+    if (fd_ < 0) fd_ = ::open(path_.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd_ < 0) {
       const int err = errno;
       if (err == EACCES || err == EPERM)
@@ -70,6 +75,42 @@ void FileTransport::write(std::span<const std::byte> bytes) {
     if (r > 0 && (p.revents & (POLLERR | POLLHUP)))
       throw DeviceError(describe() + ": device gone (unplugged?)");
   }
+}
+
+std::optional<std::vector<std::byte>> FileTransport::request(std::span<const std::byte> command,
+                                                             std::chrono::milliseconds timeout) {
+  write(command);
+  if (!reads_replies()) return std::nullopt;
+  // Replies end with ETX (GP-GL) or CR (HP-GL) and are short; more than this is not a reply.
+  constexpr std::size_t kMaxReply = 4096;
+  std::vector<std::byte> reply;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (reply.size() < kMaxReply) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) break;
+    pollfd p{fd_, POLLIN, 0};
+    const int r = ::poll(&p, 1, static_cast<int>(left.count()));
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) break;
+    char buf[256];
+    const ssize_t n = ::read(fd_, buf, sizeof buf);
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+    if (n <= 0) {
+      // A node that cannot be read after all (a one-way printer port): no reply channel from now on.
+      if (n < 0 && (errno == EINVAL || errno == EIO || errno == EBADF)) {
+        readable_ = false;
+        return std::nullopt;
+      }
+      break;
+    }
+    for (ssize_t i = 0; i < n; ++i) {
+      reply.push_back(static_cast<std::byte>(buf[i]));
+      if (buf[i] == '\x03' || buf[i] == '\r') return reply;
+    }
+  }
+  throw DeviceError(describe() + ": no reply within " + std::to_string(timeout.count()) +
+                    " ms (is the cutter switched on and ready?)");
 }
 
 void FileTransport::close() {

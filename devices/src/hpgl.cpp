@@ -1,7 +1,5 @@
 #include "foldkit/devices/hpgl.hpp"
 
-#include <algorithm>
-
 namespace foldkit::devices {
 namespace {
 
@@ -9,6 +7,12 @@ void point(std::string& out, DevicePoint p) {
   out += std::to_string(p.a);
   out += ',';
   out += std::to_string(p.b);
+}
+
+void command(std::string& out, const char* name, DevicePoint p) {
+  out += name;
+  point(out, p);
+  out += ';';
 }
 
 }  // namespace
@@ -28,19 +32,15 @@ std::string encode_hpgl(const Job& job) {
     }
     for (const Stroke& s : pass.strokes) {
       if (s.points.empty()) continue;
-      out += "PU";
-      point(out, s.points.front());
-      out += ";PD";
-      // A lone point still lowers the tool: repeat it so PD has coordinates (a bare PD; draws nothing).
-      const std::size_t n = std::max<std::size_t>(s.points.size(), 2);
-      for (std::size_t i = 1; i < n; ++i) {
-        if (i > 1) out += ',';
-        point(out, s.points[std::min(i, s.points.size() - 1)]);
-      }
-      out += ";\n";  // newline padding: some cutters on lp drop commands without it (inkcut#367)
+      command(out, "PU", s.points.front());
+      // One point per PD, as every reference writer sends; a lone point still lowers the tool.
+      if (s.points.size() == 1) command(out, "PD", s.points.front());
+      for (std::size_t i = 1; i < s.points.size(); ++i)
+        command(out, "PD", s.points[i]);
+      out += '\n';  // newline padding: some cutters on lp drop commands without it (inkcut#367)
     }
   }
-  out += "PU;SP0;IN;";
+  out += hpgl_abort_tail();
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "foldkit/devices/path_order.hpp"
+#include "foldkit/devices/printed_marks.hpp"
 #include "foldkit/error.hpp"
 
 namespace foldkit::devices {
@@ -75,12 +76,16 @@ struct Placement {
   const DeviceProfile* device = nullptr;
   std::string mat_label;
   Vec2 area_mm;
-  Vec2 mark_origin_mm{0, 0};  // subtracted after placement when cutting relative to registration marks
-  DevicePoint window_min, window_max;
+  Vec2 frame_mm;  // what reversed axes run from: the area, or the sheet (origin at the media)
+  std::optional<Vec2> mark_origin_mm;    // cutting relative to registration marks: the top-left mark
+  DevicePoint machine_min, machine_max;  // the window from the machine's origin (what \ and Z say)
+  DevicePoint window_min, window_max;    // the same in the coordinates strokes are sent in
 
+  Vec2 to_machine(Vec2 placed_mm) const { return page_to_device(*device, placed_mm, frame_mm); }
   DevicePoint to_device(Vec2 placed_mm) const {
     // Relative to the marks once they are found: the device's logical origin moves to the top-left mark.
-    const Vec2 d = page_to_device(*device, placed_mm - mark_origin_mm, area_mm);
+    const Vec2 d =
+        mark_origin_mm ? to_machine(placed_mm) - to_machine(*mark_origin_mm) : to_machine(placed_mm);
     return {std::llround(d.x), std::llround(d.y)};
   }
   bool inside(DevicePoint p) const {
@@ -100,17 +105,28 @@ struct Placement {
   }
 };
 
-Placement make_placement(const DeviceProfile& device, const PlanOptions& options, Vec2 mark_origin_mm) {
+Placement make_placement(const DeviceProfile& device, const PlanOptions& options, Vec2 sheet_mm,
+                         std::optional<Vec2> mark_origin_mm) {
   Placement pl;
   pl.device = &device;
   pl.area_mm = cutting_area_mm(device, options.mat);
+  pl.frame_mm = device.axes.origin_at_media ? sheet_mm : pl.area_mm;
   const std::string mat = options.mat.empty() && !device.mats.empty() ? device.mats.front().id : options.mat;
   pl.mat_label = mat.empty() ? "" : " with mat " + mat;
   pl.mark_origin_mm = mark_origin_mm;
-  const double m = device.margin_mm;
-  const DevicePoint c1 = pl.to_device({m, m}), c2 = pl.to_device({pl.area_mm.x - m, pl.area_mm.y - m});
-  pl.window_min = {std::min(c1.a, c2.a), std::min(c1.b, c2.b)};
-  pl.window_max = {std::max(c1.a, c2.a), std::max(c1.b, c2.b)};
+  // The device reaches margin..size-margin along each of its axes from its origin, wherever the sheet is.
+  const double m = device.margin_mm, k = device.units_per_mm;
+  const Vec2 carriage{m * k, (pl.area_mm.x - m) * k}, feed{m * k, (pl.area_mm.y - m) * k};
+  const Vec2 first = device.axes.feed_first ? feed : carriage,
+             second = device.axes.feed_first ? carriage : feed;
+  pl.machine_min = {std::llround(first.x), std::llround(second.x)};
+  pl.machine_max = {std::llround(first.y), std::llround(second.y)};
+  const DevicePoint o = pl.to_device({0, 0}),
+                    z = {std::llround(pl.to_machine({0, 0}).x), std::llround(pl.to_machine({0, 0}).y)};
+  // Logical = machine - mark origin (in device units): the window moves with the origin.
+  const DevicePoint shift{z.a - o.a, z.b - o.b};
+  pl.window_min = {pl.machine_min.a - shift.a, pl.machine_min.b - shift.b};
+  pl.window_max = {pl.machine_max.a - shift.a, pl.machine_max.b - shift.b};
   return pl;
 }
 
@@ -156,6 +172,44 @@ std::vector<std::vector<Vec2>> dashes(const std::vector<Vec2>& line, bool closed
   return out;
 }
 
+// The Silhouette sensor looks for the square of its own size; a mark it cannot find would leave the
+// blade cutting at an unknown place, so such a sheet is refused before any byte exists.
+void check_searchable(const DeviceProfile& device, const PrintedMarks& m) {
+  constexpr double kSquareToleranceMm = 0.05;
+  const double want = device.regmarks.square_mm;
+  if (std::fabs(m.square_mm - want) > kSquareToleranceMm)
+    throw DeviceError(device.name + " finds only " + fmt_mm(want) +
+                      " mm registration squares; the sheet's is " + fmt_mm(m.square_mm) +
+                      " mm (lay it out with " + fmt_mm(want) + " mm squares)");
+  if (!(m.arm_mm > m.square_mm) || !(m.stroke_mm > 0))
+    throw DeviceError("the sheet's registration brackets (arm " + fmt_mm(m.arm_mm) + " mm, line " +
+                      fmt_mm(m.stroke_mm) +
+                      " mm) cannot be searched: the arms must be longer than the square");
+}
+
+// TB123/TB124 from the printed marks: the extent and the arm and line width as printed, the search
+// starting this far before the mark (as the reference does) so a print shifted up or left is found.
+constexpr double kSearchLeadMm = 10;
+
+RegMarkSearch mark_search(const DeviceProfile& device, const Placement& pl, const PrintedMarks& m,
+                          Vec2 origin_mm) {
+  RegMarkSearch s;
+  s.command = device.regmarks.search;
+  s.mark_type = device.regmarks.mark_type;
+  const Vec2 o = pl.to_machine(origin_mm);
+  s.origin_a = std::llround(o.x);
+  s.origin_b = std::llround(o.y);
+  const double lead = kSearchLeadMm * device.units_per_mm;
+  s.start_a = std::max<std::int64_t>(0, std::llround(o.x - lead));
+  s.start_b = std::max<std::int64_t>(0, std::llround(o.y - lead));
+  const Vec2 ext = pl.to_machine(origin_mm + m.extent_mm) - o;
+  s.extent_a = std::llround(std::abs(ext.x));
+  s.extent_b = std::llround(std::abs(ext.y));
+  s.arm_length = std::llround(m.arm_mm * device.units_per_mm);
+  s.stroke = std::llround(m.stroke_mm * device.units_per_mm);
+  return s;
+}
+
 struct PassPlan {
   PassKind kind;
   ToolKind tool;
@@ -175,50 +229,28 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
   job.units_per_mm = device.units_per_mm;
   job.firmware = device.firmware;
   job.hpgl_force_command = device.hpgl_force_command;
+  job.gpgl_family = device.gpgl_family;
+  job.gpgl_acceleration = device.gpgl_acceleration;
+  job.select_holder = device.holders > 1;
   if (const Mat* mat = options.mat.empty() ? (device.mats.empty() ? nullptr : &device.mats.front())
                                            : device.mat(options.mat))
     job.mat_code = mat->code;
 
+  std::optional<PrintedMarks> marks;
   Vec2 mark_origin{0, 0};
   if (options.regmarks) {
     if (!device.regmarks.supported || device.protocol != Protocol::Gpgl)
       throw DeviceError(device.name + " cannot search registration marks (print-and-cut)");
-    Box2 marks;
-    for (const Path& p : sheet.paths) {
-      if (p.role != PathRole::RegMark) continue;
-      for (Vec2 q : p.points_mm)
-        marks.add(q + options.offset_mm);
-    }
-    if (marks.empty())
-      throw DeviceError(
-          "--regmarks: the sheet has no registration marks (lay it out with marks and print it)");
-    mark_origin = marks.min;
+    marks = printed_marks(sheet);
+    if (!marks) throw DeviceError("the sheet has no registration marks (lay it out with marks and print it)");
+    check_searchable(device, *marks);
+    mark_origin = marks->origin_mm + options.offset_mm;
   }
-  const Placement pl = make_placement(device, options, mark_origin);
-  job.window_min = pl.window_min;
-  job.window_max = pl.window_max;
-  if (options.regmarks) {
-    RegMarkSearch s;
-    s.command = device.regmarks.search;
-    s.mark_type = device.regmarks.mark_type;
-    const Vec2 o = page_to_device(device, mark_origin, pl.area_mm);
-    s.origin_a = std::llround(o.x);
-    s.origin_b = std::llround(o.y);
-    Box2 marks;
-    for (const Path& p : sheet.paths) {
-      if (p.role == PathRole::RegMark) {
-        for (Vec2 q : p.points_mm)
-          marks.add(q);
-      }
-    }
-    const Vec2 ext = page_to_device(device, {marks.width(), marks.height()}, pl.area_mm) -
-                     page_to_device(device, {0, 0}, pl.area_mm);
-    s.extent_a = std::llround(std::abs(ext.x));
-    s.extent_b = std::llround(std::abs(ext.y));
-    s.arm_length = std::llround(device.regmarks.arm_length_mm * device.units_per_mm);
-    s.stroke = std::llround(device.regmarks.stroke_mm * device.units_per_mm);
-    job.regmarks = s;
-  }
+  const Placement pl =
+      make_placement(device, options, sheet.size_mm, marks ? std::optional<Vec2>(mark_origin) : std::nullopt);
+  job.window_min = pl.machine_min;
+  job.window_max = pl.machine_max;
+  if (marks) job.regmarks = mark_search(device, pl, *marks, mark_origin);
 
   auto describe = [](const Path& p, std::size_t i) {
     std::string s = std::string(role_name(p.role)) + " path " + std::to_string(i + 1);
@@ -321,7 +353,7 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
       pl.check(plan.items[k], k, pass_kind_name(plan.kind));
   }
 
-  Vec2 at_mm = options.regmarks ? mark_origin : device_to_page(device, {0, 0}, pl.area_mm);
+  Vec2 at_mm = options.regmarks ? mark_origin : device_to_page(device, {0, 0}, pl.frame_mm);
   JobStats& st = job.stats;
   for (const PassPlan& plan : plans) {
     std::vector<ToolPath> tool_paths;
@@ -354,6 +386,8 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
     pass.speed_step = speed_step(device, plan.settings.speed_mm_s);
     pass.force_step = force_step(device, plan.settings.force_gf);
     pass.speed_mm_s = pass.speed_step * device.mm_s_per_speed_step;
+    // The AutoBlade's depth is physical: every pass with it (a kiss-cut score too) gets the cut's depth.
+    if (plan.tool == ToolKind::Blade && plan.tool_def->autoblade) pass.blade_depth = media.cut.blade_depth;
     for (const OrderedPath& o : order.paths) {
       if (o.points_mm.size() < 2) continue;
       Stroke s;

@@ -73,6 +73,7 @@ class Reader {
     throw InputError(file_, path(key) + ": " + problem);
   }
   std::string path(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
+  const std::string& prefix() const { return prefix_; }
   bool has(const std::string& key) const { return table_.contains(key); }
 
   double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
@@ -241,6 +242,15 @@ const std::vector<std::pair<std::string, FoldMethod>> kFoldMethods = {
     {"perforate", FoldMethod::Perforate},
     {"none", FoldMethod::None}};
 
+// Every table of a device profile may say where its facts come from (`source = "..."`): kept so
+// `foldkit profiles` and reviews can check them, and so a guess never passes for a measured fact.
+void read_source(Reader& r, DeviceProfile& d) {
+  if (!r.has("source")) return;
+  std::string src = r.string("source");
+  if (src.empty()) r.fail("source", "must not be empty");
+  d.sources[r.prefix()] = std::move(src);
+}
+
 StepRange read_range(Reader& r) {
   StepRange s;
   s.min = static_cast<int>(r.integer("min", 0, 10000));
@@ -264,35 +274,41 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   Reader usb = root.table("usb", true);
   d.usb_vendor = static_cast<std::uint16_t>(usb.integer("vendor", 0, 0xffff, 0));
   d.usb_product = static_cast<std::uint16_t>(usb.integer("product", 0, 0xffff, 0));
+  read_source(usb, d);
   usb.finish();
 
   Reader axes = root.table("axes");
   d.axes.feed_first = axes.choice<bool>("first", {{"feed", true}, {"carriage", false}});
   d.axes.carriage_reversed = axes.choice<bool>("carriage_from", {{"left", false}, {"right", true}});
   d.axes.feed_reversed = axes.choice<bool>("feed_from", {{"top", false}, {"bottom", true}});
+  d.axes.origin_at_media = axes.choice<bool>("origin", {{"area", false}, {"media", true}}, false);
+  read_source(axes, d);
   axes.finish();
 
   Reader area = root.table("area");
   d.area_width_mm = area.positive_up_to("width_mm", kMaxLengthMm);
   d.area_max_length_mm = area.positive_up_to("max_length_mm", kMaxLengthMm);
   d.margin_mm = area.non_negative("margin_mm", 0.0);
+  read_source(area, d);
   area.finish();
 
   for (Reader& m : root.tables("mats", true)) {
     Mat mat;
     mat.id = m.string("id");
-    mat.code = static_cast<int>(m.integer("code", 0, 99, 0));
+    if (m.has("code")) mat.code = static_cast<int>(m.integer("code", 0, 99));
     mat.width_mm = m.positive_up_to("width_mm", kMaxLengthMm);
     mat.length_mm = m.positive_up_to("length_mm", kMaxLengthMm);
     if (mat.width_mm > d.area_width_mm + 1e-9)
       m.fail("width_mm", "wider than the cutting area (" + std::to_string(d.area_width_mm) + " mm)");
     if (d.mat(mat.id)) m.fail("id", "mat \"" + mat.id + "\" given twice");
+    read_source(m, d);
     m.finish();
     d.mats.push_back(mat);
   }
 
   Reader holders = root.table("holders");
   d.holders = static_cast<int>(holders.integer("count", 1, 9));
+  read_source(holders, d);
   holders.finish();
   for (Reader& t : root.tables("tools")) {
     Tool tool;
@@ -301,6 +317,10 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
         "kind", {{"blade", ToolKind::Blade}, {"pen", ToolKind::Pen}, {"scorer", ToolKind::Scorer}});
     tool.holder = static_cast<int>(t.integer("holder", 1, d.holders));
     tool.offset_code = static_cast<int>(t.integer("offset_code", 0, 100, 0));
+    tool.autoblade = t.boolean("autoblade", false);
+    if (tool.autoblade && (tool.kind != ToolKind::Blade || tool.holder != 1))
+      t.fail("autoblade", "only a blade in holder 1 can be an AutoBlade (TF d,1)");
+    read_source(t, d);
     t.finish();
     d.tools.push_back(tool);
   }
@@ -309,29 +329,44 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   Reader speed = root.table("speed");
   d.speed_steps = read_range(speed);
   d.mm_s_per_speed_step = speed.positive_up_to("mm_s_per_step", kMaxSpeedMmS);
+  read_source(speed, d);
   speed.finish();
   Reader force = root.table("force");
   d.force_steps = read_range(force);
   d.gf_per_force_step = force.positive_up_to("gf_per_step", kMaxForceGf);
+  read_source(force, d);
   force.finish();
 
   Reader reg = root.table("regmarks", true);
   d.regmarks.supported = reg.boolean("supported", false);
   d.regmarks.search = reg.choice<std::string>("search", {{"TB123", "TB123"}, {"TB124", "TB124"}}, "TB123");
   d.regmarks.mark_type = static_cast<int>(reg.integer("mark_type", 0, 9, 2));
-  // The marks' geometry is printed by the layout (cut takes it from here) and the arm length is sent
-  // to the device (TB51): bounded like the --regmark-* options, so 1e300 fails here, not as an
+  // The marks' geometry is printed by the layout (cut takes it from here), and TB51/TB53 are read
+  // back from what was printed: bounded like the --regmark-* options, so 1e300 fails here, not as an
   // overflowing device coordinate.
   d.regmarks.square_mm = reg.between("square_mm", kMinRegMarkSquareMm, kMaxRegMarkSquareMm, 5.0);
   d.regmarks.arm_length_mm = reg.between("arm_length_mm", kMinRegMarkArmMm, kMaxRegMarkArmMm, 20.0);
   d.regmarks.stroke_mm = reg.between("stroke_mm", kMinRegMarkStrokeMm, kMaxRegMarkStrokeMm, 0.5);
   d.regmarks.inset_mm = reg.between("inset_mm", 0.0, kMaxRegMarkInsetMm, 10.0);
+  read_source(reg, d);
   reg.finish();
 
   Reader hpgl = root.table("hpgl", true);
-  d.hpgl_force_command = hpgl.choice<std::string>("force_command", {{"FS", "FS"}, {"none", ""}}, "FS");
+  d.hpgl_force_command =
+      hpgl.choice<std::string>("force_command", {{"FS", "FS"}, {"!FS", "!FS"}, {"none", ""}}, "FS");
+  read_source(hpgl, d);
   hpgl.finish();
   if (d.protocol == Protocol::Gpgl && root.has("hpgl")) root.fail("hpgl", "only for protocol \"hpgl\"");
+  Reader gpgl = root.table("gpgl", true);
+  d.gpgl_family = gpgl.choice<GpglFamily>(
+      "family",
+      {{"cameo3", GpglFamily::Cameo3}, {"cameo4", GpglFamily::Cameo4}, {"graphtec", GpglFamily::Graphtec}},
+      GpglFamily::Cameo3);
+  d.gpgl_acceleration = static_cast<int>(gpgl.integer("acceleration", 1, 3, 2));
+  read_source(gpgl, d);
+  gpgl.finish();
+  if (d.protocol == Protocol::Hpgl && root.has("gpgl")) root.fail("gpgl", "only for protocol \"gpgl\"");
+  read_source(root, d);
   if (d.fold_method == FoldMethod::Scorer && !d.tool(ToolKind::Scorer))
     root.fail("fold_method", "\"scorer\" but no tool of kind \"scorer\"");
   return d;
@@ -342,6 +377,7 @@ ToolSettings read_settings(Reader r) {
   s.force_gf = r.positive_up_to("force_gf", kMaxForceGf);
   s.speed_mm_s = r.positive_up_to("speed_mm_s", kMaxSpeedMmS);
   s.passes = static_cast<int>(r.integer("passes", 1, 10, 1));
+  if (r.has("blade_depth")) s.blade_depth = static_cast<int>(r.integer("blade_depth", 0, 10));
   r.finish();
   return s;
 }

@@ -99,6 +99,13 @@ std::string text(const std::vector<std::byte>& reply) {
 
 SendResult send_job(std::span<const std::byte> stream, Transport& transport, const SendOptions& options) {
   const std::vector<Command> commands = split(stream, options.protocol);
+  // Cutting after a mark search nobody can read would cut whether or not the marks were found.
+  const bool searches = std::any_of(commands.begin(), commands.end(),
+                                    [](const Command& c) { return c.query == Query::RegMarks; });
+  if (searches && transport.drives_device() && !transport.reads_replies())
+    throw DeviceError(transport.describe() +
+                      ": print-and-cut needs the registration-mark search's reply, and this connection "
+                      "cannot be read; nothing was sent (use the cutter's USB connection)");
   SendResult result;
   for (const Command& c : commands)
     result.strokes_total += c.starts_stroke ? 1 : 0;
@@ -122,7 +129,9 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
   auto abort = [&] {
     result.cancelled = true;
     if (!set_up) return result;
-    const std::string tail = options.protocol == Protocol::Gpgl ? gpgl_abort_tail() : hpgl_abort_tail();
+    const std::string tail = options.abort_tail                   ? *options.abort_tail
+                             : options.protocol == Protocol::Gpgl ? gpgl_abort_tail()
+                                                                  : hpgl_abort_tail();
     transport.write(stream_bytes(tail));
     return result;
   };
@@ -147,10 +156,14 @@ SendResult send_job(std::span<const std::byte> stream, Transport& transport, con
     }
     if (c.query != Query::None) {
       flush(c.begin);
-      const auto timeout = c.query == Query::RegMarks ? options.regmark_timeout : options.reply_timeout;
+      const auto timeout = c.query == Query::RegMarks ? options.regmark_timeout
+                           : c.query == Query::Status ? options.reply_timeout
+                                                      : options.query_timeout;
       const auto reply = transport.request(stream.subspan(c.begin, c.end - c.begin), timeout);
       result.bytes_sent = chunk_begin = c.end;
       if (reply && c.query == Query::Status) wait(parse_gpgl_status(*reply));
+      if (!reply && c.query == Query::RegMarks && transport.drives_device())
+        throw DeviceError(transport.describe() + ": no reply to the registration-mark search");
       if (reply && c.query == Query::RegMarks) {
         std::string r = text(*reply);
         r.erase(std::remove_if(r.begin(), r.end(), [](char ch) { return ch == ' ' || ch == '\x03'; }),

@@ -51,16 +51,30 @@ cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigne
 
 }  // namespace
 
-SimulatedDevice::SimulatedDevice(DeviceProfile profile, SimOptions options)
-    : profile_(std::move(profile)), options_(std::move(options)) {
-  area_mm_ = cutting_area_mm(profile_, options_.mat);
-  const double m = profile_.margin_mm;
-  const Vec2 c1 = page_to_device(profile_, {m, m}, area_mm_);
-  const Vec2 c2 = page_to_device(profile_, {area_mm_.x - m, area_mm_.y - m}, area_mm_);
-  area_min_ = {std::round(std::fmin(c1.x, c2.x)), std::round(std::fmin(c1.y, c2.y))};
-  area_max_ = {std::round(std::fmax(c1.x, c2.x)), std::round(std::fmax(c1.y, c2.y))};
-  window_min_ = area_min_;
-  window_max_ = area_max_;
+SimulatedDevice::SimulatedDevice(const DeviceProfile& profile, SimOptions options)
+    : model_(options.model ? *options.model : machine_model(profile)), options_(std::move(options)) {
+  // A machine without mats ignores the planner's mat names (a carrier sheet is not a TG mat).
+  area_mm_ = profile_.mats.empty() ? Vec2{profile_.area_width_mm, profile_.area_max_length_mm}
+                                   : cutting_area_mm(profile_, options_.mat);
+  auto box = [&](Vec2 size_mm, Vec2& lo, Vec2& hi) {
+    const double m = profile_.margin_mm;
+    const Vec2 c1 = page_to_device(profile_, {m, m}, size_mm);
+    const Vec2 c2 = page_to_device(profile_, {size_mm.x - m, size_mm.y - m}, size_mm);
+    lo = {std::round(std::fmin(c1.x, c2.x)), std::round(std::fmin(c1.y, c2.y))};
+    hi = {std::round(std::fmax(c1.x, c2.x)), std::round(std::fmax(c1.y, c2.y))};
+  };
+  box(area_mm_, machine_min_, machine_max_);
+  if (options_.sheet_mm && profile_.axes.origin_at_media) {
+    // A roll cutter's origin is the sheet's corner: off the sheet is off the media.
+    area_mm_ = {std::fmin(area_mm_.x, options_.sheet_mm->x), std::fmin(area_mm_.y, options_.sheet_mm->y)};
+  }
+  box(area_mm_, area_min_, area_max_);
+  window_min_ = machine_min_;
+  window_max_ = machine_max_;
+  if (profile_.holders == 1) holder_ = 1;  // one holder: nothing to select (no J)
+  // Graphtec's own list has no ESC 04: such a machine takes commands from power-on.
+  if (profile_.protocol == Protocol::Gpgl && profile_.gpgl_family == GpglFamily::Graphtec)
+    initialized_ = true;
   if (options_.mounted.empty()) {
     for (int h = 1; h <= profile_.holders; ++h) {
       // What a user would most likely have mounted: the blade in its holder, else a pen, else a scorer.
@@ -165,11 +179,61 @@ void SimulatedDevice::close() {
   }
 }
 
+// The sensor scans from the search start: it finds a mark that lies no further than this beyond it,
+// and none that lies before it. The reference starts 10 mm before the mark.
+constexpr double kSearchReachMm = 20;
+constexpr double kSearchLeadMm = 10;
+
+void SimulatedDevice::search_marks(Vec2 start, Vec2 extent) {
+  const double k = profile_.units_per_mm;
+  auto units = [&](double mm) { return fmt(mm) + " mm"; };
+  Vec2 mark = start + Vec2{kSearchLeadMm * k, kSearchLeadMm * k};
+  marks_problem_.clear();
+  if (const auto& pm = options_.printed_marks) {
+    mark = page_to_device(profile_, pm->origin_mm, area_mm_);
+    const Vec2 ext = page_to_device(profile_, pm->origin_mm + pm->extent_mm, area_mm_) - mark;
+    const Vec2 reach = start + Vec2{kSearchReachMm * k, kSearchReachMm * k};
+    if (std::fabs(pm->square_mm - profile_.regmarks.square_mm) > 0.05)
+      marks_problem_ = "the sensor finds " + units(profile_.regmarks.square_mm) +
+                       " squares, the printed one is " + units(pm->square_mm);
+    else if (std::fabs(mark_arm_ - pm->arm_mm * k) > 1)
+      marks_problem_ =
+          "TB51 says " + units(mark_arm_ / k) + " arms, the printed ones are " + units(pm->arm_mm);
+    else if (std::fabs(mark_stroke_ - pm->stroke_mm * k) > 1)
+      marks_problem_ =
+          "TB53 says " + units(mark_stroke_ / k) + " lines, the printed ones are " + units(pm->stroke_mm);
+    else if (mark.x < start.x - kTolerance || mark.y < start.y - kTolerance || mark.x > reach.x ||
+             mark.y > reach.y)
+      marks_problem_ = "the search starts at " + fmt(start) + " but the printed mark is at " + fmt(mark);
+    else if (std::fabs(std::fabs(ext.x) - extent.x) > k || std::fabs(std::fabs(ext.y) - extent.y) > k)
+      marks_problem_ = "the search expects the far marks " + fmt(extent) + " away, printed " +
+                       fmt(Vec2{std::fabs(ext.x), std::fabs(ext.y)});
+  }
+  if (marks_problem_.empty() &&
+      (!inside(mark, area_min_, area_max_) || !inside(mark + extent, area_min_, area_max_)))
+    marks_problem_ = "the marks lie outside the cutting area";
+  if (marks_problem_.empty() && options_.faults.marks_not_found)
+    marks_problem_ = "marks not found (injected fault)";
+  if (!marks_problem_.empty()) {
+    marks_failed_ = true;
+    reply("    1");
+    return;
+  }
+  mark_origin_ = mark;
+  // Window coordinates are logical from here on: relative to the top-left mark.
+  window_min_ = area_min_ - mark;
+  window_max_ = area_max_ - mark;
+  reply("    0");
+}
+
 void SimulatedDevice::reply(const std::string& text) {
   replies_.push_back(text + (profile_.protocol == Protocol::Gpgl ? "\x03" : "\r"));
 }
 
 void SimulatedDevice::execute(const ParsedCommand& c) {
+  if (!model_.commands.count(c.name))
+    fail(c.offset, (c.name.starts_with("ESC") ? "escape " : "command ") + c.name + " is not one the " +
+                       profile_.name + " takes");
   if (profile_.protocol == Protocol::Gpgl)
     execute_gpgl(c);
   else
@@ -189,8 +253,10 @@ void SimulatedDevice::move_to(Vec2 p, bool down, std::size_t offset) {
       fail(offset, "tool-down move to " + fmt(p) + " leaves the cut window " + fmt(window_min_) + ".." +
                        fmt(window_max_));
     if (!inside(p + origin, area_min_, area_max_))
-      fail(offset, "tool-down move to " + fmt(p) + " leaves the cutting area " + fmt(area_min_) + ".." +
-                       fmt(area_max_));
+      fail(offset,
+           "tool-down move to " + fmt(p + origin) + " leaves the " +
+               (options_.sheet_mm && profile_.axes.origin_at_media ? "loaded sheet " : "cutting area ") +
+               fmt(area_min_) + ".." + fmt(area_max_) + " (device units from the origin)");
     if (!down_) strokes_.push_back({holder_, force_[holder_], speed_[holder_], {pos_}});
     strokes_.back().points.push_back(p);
     down_ = true;
@@ -245,22 +311,12 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
     } else if (sub == 50) {
       if (p.size() != 2 || p[1] != 0)
         fail(c.offset, "TB50 must be TB50,0 (portrait); landscape is not supported");
+    } else if (sub == 51 || sub == 53) {
+      (sub == 51 ? mark_arm_ : mark_stroke_) = p.size() > 1 ? p[1] : -1;
     } else if (sub == 123 || sub == 124) {
       if (!profile_.regmarks.supported) fail(c.offset, "this device has no registration-mark sensor");
       if (p.size() != 5) fail(c.offset, "TB" + std::to_string(sub) + " takes height, width, top, left");
-      const Vec2 origin{p[3], p[4]};
-      const Vec2 far = origin + Vec2{p[1], p[2]};
-      if (options_.faults.marks_not_found || !inside(origin, area_min_, area_max_) ||
-          !inside(far, area_min_, area_max_)) {
-        marks_failed_ = true;
-        reply("    1");
-      } else {
-        mark_origin_ = origin;
-        // Window coordinates are logical from here on: relative to the top-left mark.
-        window_min_ = area_min_ - origin;
-        window_max_ = area_max_ - origin;
-        reply("    0");
-      }
+      search_marks(Vec2{p[3], p[4]}, Vec2{p[1], p[2]});
     } else if (sub != 99 && sub != 51 && sub != 52 && sub != 53 && sub != 54 && sub != 55) {
       fail(c.offset, "unknown TB" + std::to_string(sub));
     }
@@ -273,16 +329,17 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
     const Mat* loaded = options_.mat.empty() ? (profile_.mats.empty() ? nullptr : &profile_.mats.front())
                                              : profile_.mat(options_.mat);
     if (loaded && loaded->code != code)
-      fail(c.offset, "job expects mat TG" + std::to_string(code) + " but mat " + loaded->id + " (TG" +
-                         std::to_string(loaded->code) + ") is loaded");
+      fail(c.offset, "job expects mat TG" + std::to_string(code) + " but mat " + loaded->id + " (" +
+                         (loaded->code ? "TG" + std::to_string(*loaded->code) : "no TG code") +
+                         ") is loaded on the " + profile_.name);
   } else if (n == "FN") {
     if (p[0] != 0 && p[0] != 1) fail(c.offset, "FN takes 0 or 1");
   } else if (n == "\\" || n == "Z") {
     const Vec2 corner{p[0], p[1]};
     const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
-    if (!inside(corner + origin, area_min_, area_max_))
+    if (!inside(corner + origin, machine_min_, machine_max_))
       fail(c.offset, n + " window corner " + fmt(corner) + " lies outside the cutting area " +
-                         fmt(area_min_) + ".." + fmt(area_max_));
+                         fmt(machine_min_) + ".." + fmt(machine_max_));
     (n == "Z" ? window_max_ : window_min_) = corner;
   } else if (n == "J") {
     const int h = as_int(p[0], "holder");
@@ -305,10 +362,28 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
                          std::to_string(profile_.force_steps.max));
     force_[holder_arg(1)] = f;
   } else if (n == "FC") {
-    if (p[0] < 0 || p[0] > 46) fail(c.offset, "FC cutter offset " + fmt(p[0]) + " out of range 0..46");
+    if (p[0] < 0 || p[0] > model_.max_blade_offset)
+      fail(c.offset,
+           "FC cutter offset " + fmt(p[0]) + " out of range 0.." + std::to_string(model_.max_blade_offset));
     if (p.size() == 3) holder_arg(2);
-  } else if (n == "FE" || n == "FY" || n == "FF" || n == "TF" || n == "L" || n == "FO" || n == "FW" ||
-             n == "H") {
+  } else if (n == "TF") {
+    if (!model_.autoblade_holder_1) fail(c.offset, "TF: the " + profile_.name + " has no AutoBlade");
+    if (p[1] != 1) fail(c.offset, "TF sets the AutoBlade depth in holder 1 only, got holder " + fmt(p[1]));
+    if (p[0] < 0 || p[0] > 10 || p[0] != std::floor(p[0]))
+      fail(c.offset, "TF depth " + fmt(p[0]) + " out of range 0..10");
+  } else if (n == "TJ") {
+    if (p[0] < 0 || p[0] > 3 || p[0] != std::floor(p[0]))
+      fail(c.offset, "TJ acceleration " + fmt(p[0]) + " out of range 0..3");
+  } else if (n == "*") {
+    // Graphtec: * a,f[,n] acceleration and force.
+    const int a = as_int(p[0], "acceleration"), f = as_int(p[1], "force");
+    if (a < 1 || a > 3) fail(c.offset, "* acceleration " + std::to_string(a) + " out of range 1..3");
+    if (f < profile_.force_steps.min || f > profile_.force_steps.max)
+      fail(c.offset, "force " + std::to_string(f) + " out of range " +
+                         std::to_string(profile_.force_steps.min) + ".." +
+                         std::to_string(profile_.force_steps.max));
+    force_[holder_arg(2)] = f;
+  } else if (n == "FE" || n == "FY" || n == "FF" || n == "L" || n == "FO" || n == "FW" || n == "H") {
     // Accepted settings that change nothing the simulation tracks (lift, overcut, feed, home).
     if (n == "H") move_to({0, 0}, false, c.offset);
   } else if (n == "SO") {
@@ -368,8 +443,7 @@ void SimulatedDevice::execute_hpgl(const ParsedCommand& c) {
   } else if (n == "VS") {
     const int s = int_in(p[0], profile_.speed_steps.min, profile_.speed_steps.max, "velocity");
     speed_[p.size() > 1 ? int_in(p[1], 1, profile_.holders, "pen") : holder_] = s;
-  } else if (n == "FS") {
-    if (profile_.hpgl_force_command != "FS") fail(c.offset, "this device takes no FS (force from its panel)");
+  } else if (n == "FS" || n == "!FS") {
     const int f = int_in(p[0], profile_.force_steps.min, profile_.force_steps.max, "force");
     force_[p.size() > 1 ? int_in(p[1], 1, profile_.holders, "pen") : holder_] = f;
   } else if (n == "PU") {
@@ -386,7 +460,7 @@ void SimulatedDevice::execute_hpgl(const ParsedCommand& c) {
     } else {
       coords(true);
     }
-  } else if (n == "LT") {
+  } else if (n == "LT" || n == "!ST") {
     // Line types change how a pen plotter dashes; a cutter ignores them.
   } else {
     fail(c.offset, "command " + n + " is not supported by this device");
@@ -402,6 +476,16 @@ double SimulatedDevice::down_length_mm() const {
   return len / profile_.units_per_mm;
 }
 
+Box2 SimulatedDevice::cut_bounds_mm() const {
+  const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
+  Box2 box;
+  for (const SimStroke& s : strokes_) {
+    for (Vec2 q : s.points)
+      box.add(device_to_page(profile_, q + origin, area_mm_));
+  }
+  return box;
+}
+
 void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) const {
   const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
   auto page = [&](Vec2 d) { return device_to_page(profile_, d + origin, area_mm_); };
@@ -411,6 +495,22 @@ void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) 
     for (Vec2 q : s.points)
       box.add(page(q));
   }
+  // The mat (when it is a sheet-sized one, not a roll), the loaded sheet and the machine's origin.
+  constexpr double kLargestMatDrawnMm = 1000;
+  std::optional<Box2> mat_box, sheet_box;
+  const Mat* loaded = options_.mat.empty() ? (profile_.mats.empty() ? nullptr : &profile_.mats.front())
+                                           : profile_.mat(options_.mat);
+  if (loaded && loaded->code && *loaded->code != 0 && loaded->length_mm <= kLargestMatDrawnMm)
+    mat_box = Box2{{0, 0}, {loaded->width_mm, loaded->length_mm}};
+  if (options_.sheet_mm) sheet_box = Box2{{0, 0}, *options_.sheet_mm};
+  const Vec2 machine_origin = device_to_page(profile_, {0, 0}, area_mm_);
+  for (const auto& b : {mat_box, sheet_box}) {
+    if (b) {
+      box.add(b->min);
+      box.add(b->max);
+    }
+  }
+  box.add(machine_origin);
   constexpr double kBorderMm = 5;
   const double w_mm = box.width() + 2 * kBorderMm, h_mm = box.height() + 2 * kBorderMm;
   std::string ext = path.extension().string();
@@ -430,12 +530,54 @@ void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) 
                                          std::max(1, static_cast<int>(std::ceil(h_mm * scale))))
             : cairo_svg_surface_create_for_stream(write_to_stream, &out, w_mm * scale, h_mm * scale);
     cairo_t* cr = cairo_create(surface);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
     cairo_scale(cr, scale, scale);
     cairo_translate(cr, kBorderMm - box.min.x, kBorderMm - box.min.y);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    auto rect = [&](const Box2& b) { cairo_rectangle(cr, b.min.x, b.min.y, b.width(), b.height()); };
+    cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);  // outside the sheet
+    cairo_paint(cr);
+    if (mat_box) {
+      cairo_set_source_rgb(cr, 0.72, 0.80, 0.88);  // a light blue mat
+      rect(*mat_box);
+      cairo_fill(cr);
+    }
+    if (sheet_box) {
+      cairo_set_source_rgb(cr, 1, 1, 1);
+      rect(*sheet_box);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
+      cairo_set_line_width(cr, 0.3);
+      cairo_stroke(cr);
+    }
+    if (const auto& pm = options_.printed_marks) {
+      // As printed: the square and the two L brackets, in ink grey under the strokes.
+      cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+      cairo_rectangle(cr, pm->origin_mm.x, pm->origin_mm.y, pm->square_mm, pm->square_mm);
+      cairo_fill(cr);
+      const double h = pm->stroke_mm / 2, a = pm->arm_mm;
+      const Vec2 tr{pm->origin_mm.x + pm->extent_mm.x - h, pm->origin_mm.y + h};
+      const Vec2 bl{pm->origin_mm.x + h, pm->origin_mm.y + pm->extent_mm.y - h};
+      cairo_set_line_width(cr, pm->stroke_mm);
+      cairo_move_to(cr, tr.x - a + h, tr.y);
+      cairo_line_to(cr, tr.x, tr.y);
+      cairo_line_to(cr, tr.x, tr.y + a - h);
+      cairo_move_to(cr, bl.x, bl.y - a + h);
+      cairo_line_to(cr, bl.x, bl.y);
+      cairo_line_to(cr, bl.x + a - h, bl.y);
+      cairo_stroke(cr);
+    }
+    auto cross = [&](Vec2 at, double r, double red, double green, double blue) {
+      cairo_set_source_rgb(cr, red, green, blue);
+      cairo_set_line_width(cr, 0.4);
+      cairo_move_to(cr, at.x - r, at.y);
+      cairo_line_to(cr, at.x + r, at.y);
+      cairo_move_to(cr, at.x, at.y - r);
+      cairo_line_to(cr, at.x, at.y + r);
+      cairo_stroke(cr);
+    };
+    cross(machine_origin, 4, 0.85, 0.1, 0.1);                 // the machine's origin
+    if (mark_origin_) cross(page({0, 0}), 3, 0.9, 0.5, 0.0);  // where the mark search put (0,0)
     for (const SimStroke& s : strokes_) {
       const auto it = options_.mounted.find(s.holder);
       const ToolKind kind = it == options_.mounted.end() ? ToolKind::Blade : it->second;

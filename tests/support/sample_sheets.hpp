@@ -38,15 +38,25 @@ inline Sheet two_piece_sheet(Vec2 origin = {10, 10}, double w = 40, double h = 3
   return s;
 }
 
-/// Adds Silhouette-style registration marks (5 mm square top-left, L brackets top-right and
-/// bottom-left) with their outer corners at `min` and `max`.
-inline void add_regmarks(Sheet& s, Vec2 min, Vec2 max, double arm = 20) {
+/// Adds Silhouette-style registration marks (a `square`-mm square top-left, L brackets top-right and
+/// bottom-left drawn `stroke` wide) with their outer corners at `min` and `max`, as the layout draws them:
+/// bracket strokes centred half a stroke inside the outer edge.
+inline void add_regmarks(Sheet& s, Vec2 min, Vec2 max, double arm = 20, double square = 5,
+                         double stroke = 0.5) {
+  const double h = stroke / 2;
+  s.paths.push_back({PathRole::RegMark,
+                     {min, min + Vec2{square, 0}, min + Vec2{square, square}, min + Vec2{0, square}},
+                     true,
+                     -1,
+                     true});
+  const double right = max.x - h, top = min.y + h, left = min.x + h, bottom = max.y - h;
   s.paths.push_back(
-      {PathRole::RegMark, {min, min + Vec2{5, 0}, min + Vec2{5, 5}, min + Vec2{0, 5}}, true, -1, true});
-  s.paths.push_back(
-      {PathRole::RegMark, {{max.x - arm, min.y}, {max.x, min.y}, {max.x, min.y + arm}}, false, -1, false});
-  s.paths.push_back(
-      {PathRole::RegMark, {{min.x, max.y - arm}, {min.x, max.y}, {min.x + arm, max.y}}, false, -1, false});
+      {PathRole::RegMark, {{right - arm + h, top}, {right, top}, {right, top + arm - h}}, false, -1, false});
+  s.paths.push_back({PathRole::RegMark,
+                     {{left, bottom - arm + h}, {left, bottom}, {left + arm - h, bottom}},
+                     false,
+                     -1,
+                     false});
 }
 
 }  // namespace foldkit::test

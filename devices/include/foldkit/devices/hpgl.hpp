@@ -6,7 +6,8 @@
 
 namespace foldkit::devices {
 
-/// `IN;PA;` then per pass `SPn;VSv;FSf;` and per stroke `PUa,b;PDa,b,…;`, ending `PU;SP0;IN;` (the
+/// `IN;PA;` then per pass `SPn;VSv;FSf;` (or Roland `!FSf;`) and per stroke `PUa,b;` and one `PDa,b;` per
+/// point, ending `PU;SP0;IN;` (the
 /// final IN; releases cutters that otherwise wait for more). Coordinates in the job's device order.
 std::string encode_hpgl(const Job& job);
 

@@ -39,7 +39,8 @@ struct Pass {
   int holder = 1;
   int offset_code = 0;  ///< blade offset (raw FC value); 0 for pens and scorers
   int speed_step = 1, force_step = 1;
-  double speed_mm_s = 0;  ///< speed_step in mm/s, for time estimates
+  double speed_mm_s = 0;           ///< speed_step in mm/s, for time estimates
+  std::optional<int> blade_depth;  ///< AutoBlade depth (GP-GL TF d,1); unset for other tools
   std::vector<Stroke> strokes;
 };
 
@@ -47,9 +48,10 @@ struct Pass {
 struct RegMarkSearch {
   std::string command = "TB123";
   int mark_type = 2;
-  std::int64_t origin_a = 0, origin_b = 0;  ///< top-left mark, in device order
+  std::int64_t origin_a = 0, origin_b = 0;  ///< top-left mark as printed, in device order
+  std::int64_t start_a = 0, start_b = 0;    ///< where the search starts: a little before the mark
   std::int64_t extent_a = 0, extent_b = 0;  ///< distance to the far marks along each device axis
-  std::int64_t arm_length = 0, stroke = 0;  ///< mark geometry in device units
+  std::int64_t arm_length = 0, stroke = 0;  ///< printed mark geometry in device units (TB51, TB53)
 };
 
 /// Figures about a job, for the user and for the report.
@@ -67,9 +69,12 @@ struct Job {
   Protocol protocol = Protocol::Gpgl;
   double units_per_mm = 20;
   std::string firmware;                ///< expected model string
-  int mat_code = 0;                    ///< GP-GL TG value
-  DevicePoint window_min, window_max;  ///< the cut window (device units) every stroke lies in
+  std::optional<int> mat_code;         ///< GP-GL TG value; unset = no TG (no known code)
+  DevicePoint window_min, window_max;  ///< the cut window (device units from the machine's origin)
   std::string hpgl_force_command = "FS";
+  GpglFamily gpgl_family = GpglFamily::Cameo3;
+  int gpgl_acceleration = 2;  ///< Graphtec `*a,f` acceleration
+  bool select_holder = true;  ///< the device has several holders: passes start with J (GP-GL)
   std::optional<RegMarkSearch> regmarks;
   std::vector<Pass> passes;
   JobStats stats;

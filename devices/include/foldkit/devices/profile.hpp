@@ -4,6 +4,7 @@
 // structs. Unknown keys are errors, so a typo never silently falls back to a default.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,18 +39,19 @@ struct StepRange {
 
 /// A cutting mat (or "none" for media fed without a mat).
 struct Mat {
-  std::string id;        ///< e.g. "12x12"
-  int code = 0;          ///< GP-GL TG argument; unused for HP-GL
-  double width_mm = 0;   ///< across the carriage
-  double length_mm = 0;  ///< along the media feed
+  std::string id;           ///< e.g. "12x12"
+  std::optional<int> code;  ///< GP-GL TG argument; unset = no TG is sent (no known code; HP-GL)
+  double width_mm = 0;      ///< across the carriage
+  double length_mm = 0;     ///< along the media feed
 };
 
 /// A tool a holder can take.
 struct Tool {
   std::string id;  ///< e.g. "autoblade", "sketch-pen"
   ToolKind kind = ToolKind::Blade;
-  int holder = 1;       ///< holder number (GP-GL J, HP-GL SP)
-  int offset_code = 0;  ///< blade offset as the device's raw FC value (0 for pens and scorers)
+  int holder = 1;          ///< holder number (GP-GL J, HP-GL SP)
+  int offset_code = 0;     ///< blade offset as the device's raw FC value (0 for pens and scorers)
+  bool autoblade = false;  ///< a Silhouette AutoBlade: its depth is set with TF d,1 (holder 1 only)
 };
 
 /// Where the device's origin is and which page axis its first coordinate follows. The page is the sheet
@@ -58,6 +60,17 @@ struct AxisSetup {
   bool feed_first = true;          ///< first device coordinate runs along the media feed (page y)
   bool carriage_reversed = false;  ///< device carriage coordinate grows from the page's right edge
   bool feed_reversed = false;      ///< device feed coordinate grows from the page's bottom (HP-GL y-up)
+  /// Where the device's origin is: at a corner of its cutting area (Silhouette mats), or at the loaded
+  /// media's corner (roll cutters set it where the sheet sits, so reversed axes run from the sheet's
+  /// own edges, not from the far end of the carriage).
+  bool origin_at_media = false;
+};
+
+/// Which GP-GL dialect and set-up sequence a device takes (docs/plotter-protocols.md 2.3, 2.6).
+enum class GpglFamily {
+  Cameo3,    ///< Silhouette Cameo 3 set-up: J, !, FX, FE, FF, FC (+TC query)
+  Cameo4,    ///< Cameo 4 line (Cameo 4/5, Portrait 3/4): FX and TJ twice, FC twice
+  Graphtec,  ///< Graphtec's own GP-GL list (CE series): !, * (force), no Silhouette queries
 };
 
 /// Registration-mark support for print-and-cut.
@@ -94,8 +107,12 @@ struct DeviceProfile {
   double tool_change_s = 0.2;       ///< lifting and lowering the tool once, for time estimates
   FoldMethod fold_method = FoldMethod::Scorer;  ///< the device's preferred way to mark folds
   RegMarkSetup regmarks;
-  /// HP-GL only: the force command ("FS", or "" when the device takes force from its panel).
+  /// HP-GL only: the force command ("FS", Roland "!FS", or "" when the device takes force from its panel).
   std::string hpgl_force_command = "FS";
+  GpglFamily gpgl_family = GpglFamily::Cameo3;  ///< GP-GL only
+  int gpgl_acceleration = 0;                    ///< Graphtec `*a,f`: a (1-3); unused by Silhouettes
+  /// Where each fact came from: the `source` key of the file ("") and of its tables ("axes", "mats[2]").
+  std::map<std::string, std::string> sources;
 
   /// The mat with `id`; nullptr when the device has none of that name.
   const Mat* mat(const std::string& id) const;
@@ -108,6 +125,7 @@ struct ToolSettings {
   double force_gf = 0;
   double speed_mm_s = 0;
   int passes = 1;
+  std::optional<int> blade_depth;  ///< AutoBlade depth 0-10 (TF), cut settings only
 };
 
 /// One paper or card.
@@ -150,7 +168,8 @@ ProfileSet load_profiles(const std::filesystem::path& dir,
                          const std::vector<std::filesystem::path>& extra_files = {});
 
 /// Device coordinates (device units, in the order the device takes them) of page point `p_mm`, where
-/// `area_mm` is the active cutting area (width across the carriage, length along the feed). Not rounded.
+/// `area_mm` is what reversed axes run from: the active cutting area (width across the carriage, length
+/// along the feed), or the sheet when the origin is at the media (axes.origin_at_media). Not rounded.
 Vec2 page_to_device(const DeviceProfile& device, Vec2 p_mm, Vec2 area_mm);
 /// Inverse of page_to_device.
 Vec2 device_to_page(const DeviceProfile& device, Vec2 d, Vec2 area_mm);

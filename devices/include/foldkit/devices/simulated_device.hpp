@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "foldkit/devices/command_parser.hpp"
+#include "foldkit/devices/device_model.hpp"
+#include "foldkit/devices/printed_marks.hpp"
 #include "foldkit/devices/profile.hpp"
 #include "foldkit/devices/transport.hpp"
 
@@ -27,8 +29,13 @@ struct SimFaults {
 };
 
 struct SimOptions {
-  std::string mat;  ///< mat id (empty = the profile's first)
+  std::string mat;  ///< mat id loaded (empty = the machine's first)
   SimFaults faults;
+  /// The machine to simulate; unset = the built-in model of the profile's USB id (else the profile).
+  std::optional<MachineModel> model;
+  std::optional<Vec2> sheet_mm;  ///< the sheet loaded (on the mat's corner, or at a roll cutter's origin)
+  /// The marks printed on that sheet: the search finds them only where they really are.
+  std::optional<PrintedMarks> printed_marks;
   bool require_initialize = true;   ///< GP-GL: ESC 04 must come before set-up commands
   std::map<int, ToolKind> mounted;  ///< tool per holder for rendering; default from the profile
 };
@@ -40,16 +47,19 @@ struct SimStroke {
   std::vector<Vec2> points;
 };
 
-/// A Transport that executes HP-GL or GP-GL (the profile's protocol) on a simulated device.
+/// A Transport that executes HP-GL or GP-GL on a simulated machine: its facts (mats and TG codes, axes,
+/// holders, ranges, commands, replies) come from its own MachineModel, not from the planner's profile.
 class SimulatedDevice final : public Transport {
  public:
-  explicit SimulatedDevice(DeviceProfile profile, SimOptions options = {});
+  /// Simulates options.model, else the built-in model for `profile`'s USB id, else `profile` itself.
+  explicit SimulatedDevice(const DeviceProfile& profile, SimOptions options = {});
 
   /// Parses and executes; throws DeviceError naming the byte offset of the first bad command, or the
   /// injected fault. After an error every call throws.
   void write(std::span<const std::byte> bytes) override;
   DeviceState status() override;
   /// Writes `command` and returns the reply it produced; throws DeviceError (timeout) when it gives none.
+  bool reads_replies() const override { return true; }
   std::optional<std::vector<std::byte>> request(std::span<const std::byte> command,
                                                 std::chrono::milliseconds timeout) override;
   /// Ends the stream: throws DeviceError when it stopped inside a command or left the tool down.
@@ -67,9 +77,19 @@ class SimulatedDevice final : public Transport {
   double travel_mm() const { return travel_units_ / profile_.units_per_mm; }
   /// Where the registration-mark search put the logical origin (device units), if it ran.
   std::optional<Vec2> mark_origin() const { return mark_origin_; }
+  /// The machine simulated (model_.from_profile when there was no built-in model).
+  const MachineModel& model() const { return model_; }
+  /// Bounds of the executed tool-down strokes on the sheet, in mm (empty when nothing was cut).
+  Box2 cut_bounds_mm() const;
+  /// Why the last mark search failed ("" when it did not).
+  const std::string& marks_problem() const { return marks_problem_; }
+  /// The first error, if the device stopped on one.
+  const std::optional<std::string>& fault() const { return error_; }
 
   /// Renders the executed strokes to `path` (.png or .svg, by extension) in sheet orientation and
-  /// millimetres: cuts black, blade scores blue, scoring tool green, pen red. Atomic write.
+  /// millimetres over the mat (grey), the sheet (white) with its printed marks, and the machine's origin
+  /// (a red cross): cuts black, blade scores blue, scoring tool green, pen red. After a fault it shows
+  /// the strokes done so far. Atomic write.
   void render(const std::filesystem::path& path, double png_dpi = 150) const;
 
  private:
@@ -79,19 +99,24 @@ class SimulatedDevice final : public Transport {
   void move_to(Vec2 p, bool down, std::size_t offset);
   void pen_up();
   void reply(const std::string& text);
+  void search_marks(Vec2 start, Vec2 extent);
   [[noreturn]] void fail(std::size_t offset, const std::string& problem);
   void check_alive() const;
 
-  DeviceProfile profile_;
+  MachineModel model_;
+  DeviceProfile& profile_ = model_.facts;
   SimOptions options_;
   Vec2 area_mm_;
-  Vec2 area_min_, area_max_;  // device units
+  Vec2 machine_min_, machine_max_;  // device units: what the machine reaches
+  Vec2 area_min_, area_max_;        // device units: where cutting is allowed (the sheet on a roll cutter)
   Vec2 window_min_, window_max_;
   GpglParser gpgl_;
   HpglParser hpgl_;
   std::size_t received_ = 0;
   bool initialized_ = false, closed_ = false, down_ = false, relative_ = false;
   bool marks_failed_ = false;
+  std::string marks_problem_;
+  double mark_arm_ = -1, mark_stroke_ = -1;  // TB51, TB53 as received
   std::optional<std::string> error_;
   int holder_ = 0;
   std::map<int, int> speed_, force_;

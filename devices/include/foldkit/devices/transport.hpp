@@ -32,6 +32,10 @@ class Transport {
     write(command);
     return std::nullopt;
   }
+  /// Whether request() can return replies (a USB cutter, a readable device node, the simulated device).
+  virtual bool reads_replies() const { return false; }
+  /// Whether bytes sent here drive a machine now (false for a plain file, written for later).
+  virtual bool drives_device() const { return true; }
   /// A short description for messages, e.g. "usb 0b4d:1137 (Silhouette Cameo 4)" or "file job.gpgl".
   virtual std::string describe() const = 0;
 };

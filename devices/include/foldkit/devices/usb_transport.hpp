@@ -61,6 +61,7 @@ class UsbTransport final : public Transport {
 
   /// Sends a command and returns its reply up to and including its ETX (GP-GL) or CR (HP-GL); nullopt
   /// after just writing it when the device has no IN endpoint.
+  bool reads_replies() const override { return true; }
   std::optional<std::vector<std::byte>> request(std::span<const std::byte> command,
                                                 std::chrono::milliseconds timeout) override;
   /// wMaxPacketSize of the bulk OUT endpoint.
