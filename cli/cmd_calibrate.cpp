@@ -35,7 +35,7 @@ struct CalibrateArgs {
   std::vector<std::string> profiles;
   std::string pdf, job, preview;
   std::string offset;
-  bool reset = false, verify = false, json = false;
+  bool reset = false, verify = false, show = false, json = false;
 };
 
 // One signed length: "0.8", "-1.2mm", "0.1cm", "0.03in"; `unit` is the default when none is written.
@@ -82,6 +82,26 @@ std::string mm_pair(Vec2 v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%+.2f, %+.2f mm", v.x, v.y);
   return buf;
+}
+
+void show_offset(const CalibrateArgs& args, const devices::DeviceProfile& device) {
+  const auto file = devices::calibration_file(user_config_dir(), device.id);
+  const auto stored = devices::load_calibration(file, device.id);
+  const Vec2 offset = stored ? stored->offset_mm : Vec2{0, 0};
+  if (args.json) {
+    std::cout << nlohmann::json{{"device", device.id},
+                                {"file", file.string()},
+                                {"stored", stored.has_value()},
+                                {"offset_mm", {offset.x, offset.y}}}
+                     .dump(2)
+              << "\n";
+  } else if (stored) {
+    std::printf("%s: print-and-cut offset %s (%s)\n", device.name.c_str(), mm_pair(offset).c_str(),
+                file.string().c_str());
+  } else {
+    std::printf("%s: no print-and-cut offset stored (%s would hold it)\n", device.name.c_str(),
+                file.string().c_str());
+  }
 }
 
 void store_offset(const CalibrateArgs& args, const devices::DeviceProfile& device) {
@@ -232,11 +252,16 @@ void setup_calibrate(CLI::App& app) {
                       "Store the measured correction DX,DY (printed minus cut; mm, x right, y down), "
                       "e.g. 0.8,-1.2mm; applied to every later print-and-cut job on this device");
   cmd->add_flag("--reset", args->reset, "Remove the stored correction of this device")->excludes(offset);
+  cmd->add_flag("--show", args->show, "Say which correction is stored for this device")->excludes(offset);
   cmd->add_flag("--verify", args->verify, "Cut the page with the stored correction applied, to check it");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->callback([args] {
     const devices::ProfileSet profiles = load_cli_profiles(args->profiles);
     const devices::DeviceProfile& device = profiles.device(args->device);
+    if (args->show) {
+      show_offset(*args, device);
+      return;
+    }
     if (!args->offset.empty() || args->reset) {
       store_offset(*args, device);
       return;

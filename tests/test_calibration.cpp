@@ -211,6 +211,8 @@ TEST(Calibration, AnOffsetEnteredOnceShiftsEveryLaterCutJobOnThatDevice) {
   const auto store = test::run_foldkit({"calibrate", "--device", "cameo4", "--offset", "0.8,-1.2mm"});
   ASSERT_EQ(store.exit_code, 0) << store.err;
   EXPECT_TRUE(fs::exists(dir / "config/foldkit/calibration/cameo4.toml"));
+  const auto shown = test::run_foldkit({"calibrate", "--device", "cameo4", "--show"});
+  EXPECT_NE(shown.out.find("+0.80, -1.20 mm"), std::string::npos) << shown.out;
 
   // A new process, which knows the offset only from the file.
   const std::string after = cut_to("after.gpgl");

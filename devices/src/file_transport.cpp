@@ -96,14 +96,13 @@ std::optional<std::vector<std::byte>> FileTransport::request(std::span<const std
     char buf[256];
     const ssize_t n = ::read(fd_, buf, sizeof buf);
     if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
-    if (n <= 0) {
-      // A node that cannot be read after all (a one-way printer port): no reply channel from now on.
-      if (n < 0 && (errno == EINVAL || errno == EIO || errno == EBADF)) {
-        readable_ = false;
-        return std::nullopt;
-      }
-      break;
+    if (n == 0 || (n < 0 && (errno == EINVAL || errno == EIO || errno == EBADF))) {
+      // End of file or a refused read: a one-way port after all, no reply channel from now on (a job
+      // without a mark search still goes through it as before; send_job refuses one with a search).
+      readable_ = false;
+      return std::nullopt;
     }
+    if (n < 0) break;
     for (ssize_t i = 0; i < n; ++i) {
       reply.push_back(static_cast<std::byte>(buf[i]));
       if (buf[i] == '\x03' || buf[i] == '\r') return reply;

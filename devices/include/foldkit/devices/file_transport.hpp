@@ -14,9 +14,11 @@ namespace foldkit::devices {
 /// A Transport to a path. Regular files (or new paths) are written to a temporary file and renamed on
 /// close(); character devices, FIFOs and sockets are opened read-write when they allow it (else
 /// write-only) and written directly. status() is Unknown. On a readable node, request() reads the reply
-/// up to its ETX or CR within the query's timeout, as over USB. Throws DeviceError for permission denied
-/// (naming the group to join), a node that takes no data within `write_timeout` (the same bound as a busy
-/// USB cutter: --ready-timeout), a missing reply or a write error; OutputError for an unwritable file.
+/// up to its ETX or CR within the query's timeout, as over USB; a node that reads as end of file is a
+/// one-way port from then on (request() returns nullopt, as on a write-only node). Throws DeviceError for
+/// permission denied (naming the group to join), a node that takes no data within `write_timeout` (the same
+/// bound as a busy USB cutter: --ready-timeout), a missing reply or a write error; OutputError for an
+/// unwritable file.
 class FileTransport final : public Transport {
  public:
   explicit FileTransport(std::filesystem::path path,
