@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/devices/file_transport.hpp"
@@ -51,6 +52,7 @@ struct CutArgs {
   bool json = false, quiet = false;
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
+  ColourCliOptions colour;
 };
 
 std::uint16_t parse_usb_id(const std::string& text, const char* option) {
@@ -133,6 +135,7 @@ void setup_cut(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_layout_options(*cmd, args->layout);
+  add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
 
   cmd->callback([args, cmd] {
@@ -204,7 +207,10 @@ void setup_cut(CLI::App& app) {
     if (cmd->count("--regmark-square") == 0) marks.square_mm = device_marks.square_mm;
     marks.stroke_mm = device_marks.stroke_mm;
     ProgressLine line(!args->quiet && !args->json);
-    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    // The colour options move pieces (the bleed widens their spacing): taken so that a cut matches the
+    // coloured sheet `make` printed with the same options.
+    PipelineRun run =
+        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const std::vector<Sheet>& sheets = run.layout.sheets;
     if (args->sheet > static_cast<int>(sheets.size()))
       throw Error("--sheet " + std::to_string(args->sheet) + ": the layout has " +

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/devices/bundle.hpp"
@@ -36,6 +37,7 @@ struct MakeArgs {
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
+  ColourCliOptions colour;
 };
 
 // Dash patterns (mm on, off, …) by name.
@@ -170,6 +172,7 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_layout_options(*cmd, args->layout);
+  add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     if (args->output.empty() && args->bundle.empty())
@@ -185,7 +188,8 @@ void setup_make(CLI::App& app) {
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
     if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
-    PipelineRun run = load_unfold_layout(args->mesh, args->unfold, layout_options, line);
+    PipelineRun run =
+        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const layout::LayoutResult& r = run.layout;
 
     if (format != "pdf") {
@@ -197,6 +201,9 @@ void setup_make(CLI::App& app) {
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
+    const bool coloured =
+        std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
+    apply_colour_render_options(args->colour, coloured, render);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     std::vector<std::filesystem::path> files;
     if (!args->output.empty()) files = write_sheets(r.sheets, args->output, render);

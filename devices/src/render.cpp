@@ -54,6 +54,25 @@ const RoleStyle& RenderOptions::style(PathRole role) const {
   return cut;
 }
 
+namespace detail {
+
+std::optional<RoleStyle> sheet_style(const RenderOptions& options, const Sheet& sheet, PathRole role) {
+  RoleStyle style = options.style(role);
+  const bool fold = role == PathRole::Mountain || role == PathRole::Valley;
+  if (fold && options.fold_lines == FoldLines::None) return std::nullopt;
+  if (fold && options.fold_lines == FoldLines::Light) {
+    // Two thirds of the way to white and thinner: visible to fold by, quiet on the print.
+    constexpr double kToWhite = 0.65, kThinner = 0.6;
+    auto light = [](double c) { return c + (1 - c) * kToWhite; };
+    style.stroke = {light(style.stroke.r), light(style.stroke.g), light(style.stroke.b)};
+    style.width_mm *= kThinner;
+  }
+  if (role == PathRole::Tab && !sheet.fills.empty()) style.fill_closed = false;
+  return style;
+}
+
+}  // namespace detail
+
 std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::size_t index) {
   if (index == 0) return path;
   std::filesystem::path numbered = path;

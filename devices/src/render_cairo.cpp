@@ -8,6 +8,7 @@
 #include <memory>
 #include <ostream>
 
+#include "render_fills.hpp"
 #include "render_internal.hpp"
 
 namespace foldkit::devices::detail {
@@ -17,6 +18,8 @@ constexpr double kMmPerInch = 25.4;
 constexpr double kPointsPerMm = 72.0 / kMmPerInch;
 // Cairo image surfaces are limited to 32767 pixels a side.
 constexpr int kMaxImageSide = 32767;
+// Width of the white halo around labels on coloured sheets, per millimetre of cap height.
+constexpr double kHaloPerCap = 0.35;
 
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
@@ -64,7 +67,9 @@ void apply_line_style(cairo_t* cr, const RoleStyle& style) {
 }
 
 void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, PathRole role) {
-  const RoleStyle& style = options.style(role);
+  const std::optional<RoleStyle> drawn = sheet_style(options, sheet, role);
+  if (!drawn) return;
+  const RoleStyle& style = *drawn;
   apply_line_style(cr, style);
   for (const Path& path : sheet.paths) {
     if (path.role != role || path.points_mm.empty()) continue;
@@ -91,9 +96,20 @@ void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, d
       // y points down, so a positive Cairo rotation turns clockwise on the page: the Text convention.
       cairo_rotate(cr, text.angle_rad);
       cairo_set_font_size(cr, text.height_mm / cap_ratio);
-      set_source(cr, options.style(role).stroke);
       cairo_move_to(cr, 0, 0);
-      cairo_show_text(cr, text.text.c_str());
+      if (!sheet.fills.empty()) {
+        // A white halo keeps labels readable on dark textures.
+        cairo_text_path(cr, text.text.c_str());
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_stroke_preserve(cr);
+        set_source(cr, options.style(role).stroke);
+        cairo_fill(cr);
+      } else {
+        set_source(cr, options.style(role).stroke);
+        cairo_show_text(cr, text.text.c_str());
+      }
       cairo_restore(cr);
     }
   }
@@ -111,7 +127,34 @@ double measure_cap_ratio(cairo_t* cr, const std::string& family) {
   return ratio > 0.3 && ratio < 1.2 ? ratio : 0.72;
 }
 
-void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+// The fills of a PDF page: one JPEG per sheet through a clip to the fills' outlines (see FillRaster).
+void paint_fill_raster(cairo_t* cr, const Sheet& sheet, const FillImages& images, double max_dpi) {
+  FillRaster raster = raster_fills(sheet, images, max_dpi);
+  if (raster.jpeg.empty()) return;
+  SurfacePtr image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, raster.width_px, raster.height_px));
+  // The PDF embeds the JPEG bytes as they are; the white surface itself is never drawn into the file.
+  auto* bytes = new std::string(std::move(raster.jpeg));
+  cairo_surface_set_mime_data(
+      image.get(), CAIRO_MIME_TYPE_JPEG, reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(),
+      [](void* data) { delete static_cast<std::string*>(data); }, bytes);
+  cairo_save(cr);
+  trace_fill_outlines(cr, sheet);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+  cairo_clip(cr);
+  cairo_translate(cr, raster.box_mm.min.x, raster.box_mm.min.y);
+  cairo_scale(cr, raster.box_mm.width() / raster.width_px, raster.box_mm.height() / raster.height_px);
+  cairo_set_source_surface(cr, image.get(), 0, 0);
+  cairo_paint(cr);
+  cairo_restore(cr);
+}
+
+// Fills painted directly (PNG), or as one image per sheet (PDF: raster_dpi > 0).
+void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio,
+                const FillImages& images, double raster_dpi = 0) {
+  if (raster_dpi > 0)
+    paint_fill_raster(cr, sheet, images, raster_dpi);
+  else
+    paint_fills(cr, sheet, images);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   for (PathRole role : kPaintOrder)
@@ -137,13 +180,14 @@ bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const Render
   {
     ContextPtr cr(cairo_create(surface.get()));
     const double cap_ratio = measure_cap_ratio(cr.get(), options.font_family);
+    const FillImages images(sheets, options.image_dpi);
     for (const Sheet& sheet : sheets) {
       // Page size may change between pages; it must be set before anything is drawn on the page.
       cairo_pdf_surface_set_size(surface.get(), sheet.size_mm.x * kPointsPerMm,
                                  sheet.size_mm.y * kPointsPerMm);
       cairo_save(cr.get());
       cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
-      draw_sheet(cr.get(), sheet, options, cap_ratio);
+      draw_sheet(cr.get(), sheet, options, cap_ratio, images, options.image_dpi);
       cairo_restore(cr.get());
       cairo_show_page(cr.get());
     }
@@ -180,7 +224,8 @@ bool write_png(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
     cairo_set_source_rgb(cr.get(), 1, 1, 1);
     cairo_paint(cr.get());
     cairo_scale(cr.get(), px_per_mm, px_per_mm);
-    draw_sheet(cr.get(), sheet, options, measure_cap_ratio(cr.get(), options.font_family));
+    const FillImages images(std::span<const Sheet>(&sheet, 1), std::min(options.image_dpi, options.png_dpi));
+    draw_sheet(cr.get(), sheet, options, measure_cap_ratio(cr.get(), options.font_family), images);
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
       error = cairo_status_to_string(cairo_status(cr.get()));
       return false;

@@ -2,6 +2,7 @@
 // Shared between the renderers: drawing order, number formatting and the text metrics that make
 // `Text::height_mm` a cap height in every format.
 #include <array>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ inline Rgb tint_colour(int tint) {
                                                     {0.35, 0.35, 0.35}}};
   return kPalette[static_cast<std::size_t>(tint) % kPalette.size()];
 }
+
+/// The style `role` is drawn in on `sheet`: fold lines lightened or hidden as options.fold_lines says,
+/// tabs unfilled on coloured sheets (their fills are the sheet's). nullopt: the role is not drawn.
+std::optional<RoleStyle> sheet_style(const RenderOptions& options, const Sheet& sheet, PathRole role);
 
 /// Cap height of `family` as a fraction of its font size (DejaVu Sans: about 0.73), measured with Cairo
 /// so that PDF, PNG and SVG texts come out the same size.

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "render_fills.hpp"
 #include "render_internal.hpp"
 
 namespace foldkit::devices::detail {
@@ -100,7 +101,30 @@ void write_path(std::ostream& out, const Path& path, const RoleStyle& style) {
   out << "/>\n";
 }
 
-void write_text(std::ostream& out, const Text& text, const RenderOptions& options, double cap_ratio) {
+// Fills in a group of their own under the role groups: one embedded JPEG per sheet (see FillRaster)
+// through a clip to the fills' outlines.
+void write_fills(std::ostream& out, const Sheet& sheet, const RenderOptions& options) {
+  if (sheet.fills.empty()) return;
+  const FillImages images(std::span<const Sheet>(&sheet, 1), options.image_dpi);
+  const FillRaster raster = raster_fills(sheet, images, options.image_dpi);
+  if (raster.jpeg.empty()) return;
+  out << "  <defs>\n    <clipPath id=\"fills\">\n";
+  for (const Fill& fill : sheet.fills) {
+    out << "      <path d=\"";
+    for (std::size_t i = 0; i < fill.outline_mm.size(); ++i)
+      out << (i == 0 ? "M" : " L") << num(fill.outline_mm[i].x) << " " << num(fill.outline_mm[i].y);
+    out << " Z\"/>\n";
+  }
+  out << "    </clipPath>\n  </defs>\n";
+  out << "  <g id=\"fill\" inkscape:groupmode=\"layer\" inkscape:label=\"fill\" clip-path=\"url(#fills)\">\n"
+      << "    <image x=\"" << num(raster.box_mm.min.x) << "\" y=\"" << num(raster.box_mm.min.y)
+      << "\" width=\"" << num(raster.box_mm.width()) << "\" height=\"" << num(raster.box_mm.height())
+      << "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/jpeg;base64," << base64(raster.jpeg)
+      << "\"/>\n  </g>\n";
+}
+
+void write_text(std::ostream& out, const Text& text, const RenderOptions& options, double cap_ratio,
+                bool halo) {
   constexpr double kDegPerRad = 57.29577951308232;
   out << "    <text x=\"" << num(text.at_mm.x) << "\" y=\"" << num(text.at_mm.y) << "\" font-size=\""
       << num(text.height_mm / cap_ratio) << "\"";
@@ -109,6 +133,10 @@ void write_text(std::ostream& out, const Text& text, const RenderOptions& option
     out << " transform=\"rotate(" << num(text.angle_rad * kDegPerRad) << " " << num(text.at_mm.x) << " "
         << num(text.at_mm.y) << ")\"";
   }
+  // A white halo keeps labels readable on dark textures.
+  if (halo)
+    out << " stroke=\"#ffffff\" stroke-width=\"" << num(0.35 * text.height_mm)
+        << "\" stroke-linejoin=\"round\" paint-order=\"stroke\"";
   out << " fill=\"" << colour(options.style(text.role).stroke) << "\">" << escape(text.text) << "</text>\n";
 }
 
@@ -118,13 +146,16 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
   const std::string w = num(sheet.size_mm.x), h = num(sheet.size_mm.y);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\""
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" "
+         "xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\""
       << w << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n";
+  write_fills(out, sheet, options);
   for (PathRole role : kPaintOrder) {
-    const RoleStyle& style = options.style(role);
+    const std::optional<RoleStyle> drawn = sheet_style(options, sheet, role);
+    const RoleStyle& style = drawn ? *drawn : options.style(role);
     write_group_open(out, role, style);
     for (const Path& path : sheet.paths) {
-      if (path.role == role && !path.points_mm.empty()) write_path(out, path, style);
+      if (drawn && path.role == role && !path.points_mm.empty()) write_path(out, path, style);
     }
     bool any_text = false;
     for (const Text& text : sheet.texts) {
@@ -134,7 +165,7 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
         out << "    <g stroke=\"none\" font-family=\"" << escape(options.font_family) << "\">\n";
         any_text = true;
       }
-      write_text(out, text, options, cap_ratio);
+      write_text(out, text, options, cap_ratio, !sheet.fills.empty());
     }
     if (any_text) out << "    </g>\n";
     out << "  </g>\n";

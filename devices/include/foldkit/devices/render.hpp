@@ -22,6 +22,9 @@ struct RoleStyle {
   Rgb fill{1, 1, 1};            ///< fill colour when fill_closed
 };
 
+/// How fold lines are drawn: on coloured sheets they are best light or absent (a cutter scores them).
+enum class FoldLines { Normal, Light, None };
+
 struct RenderOptions {
   double png_dpi = 150;                    ///< resolution of PNG previews
   std::string format;                      ///< "pdf", "svg" or "png"; empty: from the path's extension
@@ -35,6 +38,10 @@ struct RenderOptions {
   RoleStyle regmark{{0, 0, 0}, 0.5, {}};         ///< 0.5 mm: the stroke Silhouette's optical sensor expects
   RoleStyle piece{{0.25, 0.25, 0.25}, 0.2, {}};  ///< part letters: dark grey, readable under the lines
   RoleStyle sheet{{0, 0, 0}, 0.25, {}};          ///< sheet number, scale check, legend
+  FoldLines fold_lines = FoldLines::Normal;
+  /// Textures are embedded at most this fine (texels per inch of paper): a 1024 x 1024 texture on a
+  /// small model need not cost tens of megabytes.
+  double image_dpi = 300;
 
   /// The style of `role`.
   const RoleStyle& style(PathRole role) const;

@@ -1,9 +1,11 @@
 #pragma once
 // A laid-out sheet: the contract between layout/ and devices/. Geometry carries roles, never colours
 // or tools; renderers and device profiles map roles to styles and tools.
+#include <array>
 #include <string>
 #include <vector>
 
+#include "foldkit/geom/colour.hpp"
 #include "foldkit/geom/vec.hpp"
 
 namespace foldkit {
@@ -60,12 +62,33 @@ struct Text {
   int piece = -1;
 };
 
+/// A texture image that fills refer to: a file, or the encoded bytes a model file embedded.
+struct SheetImage {
+  std::string file;                 ///< path to read, or (when `data` is set) a name for messages
+  std::vector<unsigned char> data;  ///< encoded PNG or JPEG; empty: read `file`
+};
+
+/// Colour printed under the lines of a piece: `outline_mm` filled with `colour` or, when `image` >= 0,
+/// with that image mapped affinely so that texture coordinate uv[i] (u right, v up, the image is
+/// [0,1]^2) lands on corners_mm[i]; the image is multiplied by `colour`. Cutters ignore fills.
+struct Fill {
+  std::vector<Vec2> outline_mm;  ///< closed polygon: a face grown by the bleed, or a tab
+  Colour colour;
+  int image = -1;  ///< index into Sheet::images, -1 for a flat colour
+  std::array<Vec2, 3> corners_mm{};
+  std::array<Vec2, 3> uv{};
+  int piece = -1;
+};
+
 /// One sheet of paper with everything to print, draw, score and cut on it.
 struct Sheet {
   Vec2 size_mm;       ///< width, height of the paper
   Box2 printable_mm;  ///< area inside the margins; everything but registration marks lies inside it
   std::vector<Path> paths;
   std::vector<Text> texts;
+  /// Colour under everything else, in order (faces, then tabs); empty for a white sheet.
+  std::vector<Fill> fills;
+  std::vector<SheetImage> images;  ///< the textures `fills` refer to
 };
 
 }  // namespace foldkit
