@@ -1,5 +1,6 @@
 // `foldkit cut MESH --device cameo4 --media cardstock-220`: load -> unfold -> lay out -> plan -> encode ->
 // send, to a USB cutter, a file or device node (-o), or the simulated device (--dry-run, or no --device).
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -12,6 +13,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/devices/file_transport.hpp"
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/hpgl.hpp"
@@ -22,8 +24,10 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
+#include "interrupt.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
+#include "output_paths.hpp"
 #include "pipeline.hpp"
 #include "profile_options.hpp"
 #include "sim_faults.hpp"
@@ -31,32 +35,6 @@
 
 namespace foldkit::cli {
 namespace {
-
-// The one process-wide flag a signal handler may touch: SIGINT sets it, send_job polls it between
-// slices and stops cleanly (tool up, end of job). Only the handler and run_cut see it.
-std::atomic<bool> g_interrupted{false};
-
-extern "C" void on_sigint(int) {
-  g_interrupted.store(true);
-}
-
-// Installs the SIGINT handler for the lifetime of a send, restoring the previous one after.
-class SigintGuard {
- public:
-  SigintGuard() {
-    g_interrupted = false;
-    struct sigaction sa {};
-    sa.sa_handler = on_sigint;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &previous_);
-  }
-  ~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  struct sigaction previous_ {};
-};
 
 struct CutArgs {
   std::string mesh;
@@ -174,6 +152,16 @@ void setup_cut(CLI::App& app) {
     if (args->device.empty() && !args->output.empty())
       throw Error("-o needs --device: the stream's language and units depend on the plotter",
                   ExitCode::Usage);
+    if (!args->preview.empty() && !simulated)
+      throw Error("--preview is the simulated device's rendering: add --dry-run (and drop -o)",
+                  ExitCode::Usage);
+    const bool to_stdout = args->output == "-" || args->preview == "-";
+    if (to_stdout && args->json)
+      throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
+    std::vector<std::filesystem::path> inputs{args->mesh, args->unfold.cut_file, args->unfold.keep_file};
+    inputs.insert(inputs.end(), args->profiles.begin(), args->profiles.end());
+    refuse_output_over_inputs("-o", args->output, inputs);
+    refuse_output_over_inputs("--preview", args->preview, inputs);
     // A typical two-holder cutter stands in when no device is named.
     const std::string device_id = args->device.empty() ? "cameo4" : args->device;
     devices::DeviceProfile device = profiles.device(device_id);
@@ -183,6 +171,13 @@ void setup_cut(CLI::App& app) {
     if (!args->output.empty() && !args->dry_run) {
       const std::string ext = lower_ext(args->output);
       const bool hpgl_ext = ext == ".plt" || ext == ".hpgl" || ext == ".hpg";
+      if (!hpgl_ext && ext != ".gpgl" &&
+          devices::resolve_output(args->output).kind == devices::OutputKind::File)
+        throw Error(
+            "-o " + args->output +
+                ": a job is written to .plt, .hpgl or .hpg (HP-GL), .gpgl (GP-GL), a device node such "
+                "as /dev/usb/lp0, or - (standard output)",
+            ExitCode::Usage);
       if ((hpgl_ext && device.protocol != devices::Protocol::Hpgl) ||
           (ext == ".gpgl" && device.protocol != devices::Protocol::Gpgl))
         throw Error(
@@ -240,6 +235,18 @@ void setup_cut(CLI::App& app) {
     const std::string preview = !args->preview.empty() ? args->preview
                                 : simulated ? std::filesystem::path(args->mesh).stem().string() + "-cut.png"
                                             : "";
+    for (std::size_t i = 1; i < sheets.size(); ++i) {
+      refuse_output_over_inputs("-o", sheet_output_path(args->output, i), inputs);
+      refuse_output_over_inputs("--preview", sheet_output_path(preview, i), inputs);
+    }
+    auto wait_for_sheet = [&](std::size_t i) {
+      if (i == 0 && (args->sheet != 0 || sheets.size() == 1)) return;
+      line.clear();
+      std::cerr << "Load sheet " << i + 1 << " of " << sheets.size() << " and press Enter (Ctrl-C stops) ";
+      std::string ignored;
+      if (!std::getline(std::cin, ignored))
+        throw Error("stopped before sheet " + std::to_string(i + 1), ExitCode::Interrupted);
+    };
     std::vector<SheetReport> reports;
     for (std::size_t i = 0; i < sheets.size(); ++i) {
       if (args->sheet > 0 && i + 1 != static_cast<std::size_t>(args->sheet)) continue;
@@ -297,22 +304,17 @@ void setup_cut(CLI::App& app) {
         sim = dev.get();
         transport = std::move(dev);
       } else if (!args->output.empty()) {
+        // A device node is a cutter too: each sheet after the first needs fresh media.
+        if (devices::resolve_output(args->output).kind == devices::OutputKind::Node) wait_for_sheet(i);
         // A device node that stops taking data is a busy cutter: the same bound as over USB.
-        transport = std::make_unique<devices::FileTransport>(devices::sheet_file_path(args->output, i),
-                                                             send.ready_timeout);
+        transport =
+            std::make_unique<devices::FileTransport>(sheet_output_path(args->output, i), send.ready_timeout);
       } else {
         if (device.usb_vendor == 0)
           throw DeviceError(
               device.name +
               " has no USB id: use -o /dev/usb/lp0 (or a serial port), or --usb-vid and --usb-pid");
-        if (i > 0 || (args->sheet == 0 && sheets.size() > 1)) {
-          line.clear();
-          std::cerr << "Load sheet " << i + 1 << " of " << sheets.size()
-                    << " and press Enter (Ctrl-C stops) ";
-          std::string ignored;
-          if (!std::getline(std::cin, ignored))
-            throw Error("stopped before sheet " + std::to_string(i + 1), ExitCode::Interrupted);
-        }
+        wait_for_sheet(i);
         devices::UsbSelector sel;
         sel.id = {device.usb_vendor, device.usb_product, device.name};
         devices::UsbOptions usb;
@@ -323,8 +325,9 @@ void setup_cut(CLI::App& app) {
         transport = devices::open_usb_cutter(sel, usb);
       }
       rep.target = transport->describe();
-      SigintGuard guard;
-      send.cancel = &g_interrupted;
+      std::atomic<bool> cancel{false};
+      const ScopedCancel cancel_on_signal(cancel);
+      send.cancel = &cancel;
       devices::SendResult result;
       try {
         result = devices::send_job(devices::stream_bytes(stream), *transport, send);
@@ -336,7 +339,7 @@ void setup_cut(CLI::App& app) {
         std::string what = e.what();
         if (!sim->marks_problem().empty()) what += " (" + sim->marks_problem() + ")";
         if (!preview.empty()) {
-          const auto partial = devices::sheet_file_path(preview, i);
+          const auto partial = sheet_output_path(preview, i);
           sim->render(partial);
           what += "; " + std::to_string(sim->strokes().size()) + " strokes were done, partial picture in " +
                   partial.string();
@@ -345,13 +348,15 @@ void setup_cut(CLI::App& app) {
       }
       line.clear();
       if (result.cancelled) {
-        throw Error("stopped by Ctrl-C after " + std::to_string(result.strokes_done) + " of " +
-                        std::to_string(result.strokes_total) + " strokes of " +
+        const bool term = cancel_on_signal.signal() == SIGTERM;
+        throw Error(std::string(term ? "stopped by SIGTERM" : "stopped by Ctrl-C") + " after " +
+                        std::to_string(result.strokes_done) + " of " + std::to_string(result.strokes_total) +
+                        " strokes of " +
                         (sheet_label.empty() ? "the sheet" : sheet_label.substr(0, sheet_label.size() - 2)) +
                         " (" + rep.target +
                         "): the tool was raised and the job ended; the pieces cut so far "
                         "are usable, the rest of the sheet is not cut",
-                    ExitCode::Interrupted);
+                    term ? ExitCode::Terminated : ExitCode::Interrupted);
       }
       if (sim) {
         if (sim->model().from_profile)
@@ -359,7 +364,7 @@ void setup_cut(CLI::App& app) {
                               ": the simulated device checked the job against its profile only");
         rep.simulated_cut_mm = sim->down_length_mm();
         rep.simulated_travel_mm = sim->travel_mm();
-        if (!preview.empty()) sim->render(devices::sheet_file_path(preview, i));
+        if (!preview.empty()) sim->render(sheet_output_path(preview, i));
       }
       reports.push_back(std::move(rep));
     }
@@ -389,18 +394,21 @@ void setup_cut(CLI::App& app) {
                 << "\n";
       return;
     }
+    // With -o - the job is on standard output: the summary must not be mixed into it.
+    std::FILE* const report = to_stdout ? stderr : stdout;
     for (std::size_t k = 0; k < reports.size(); ++k) {
       const SheetReport& r = reports[k];
       for (const auto& n : r.notes)
         std::cerr << "note: " << n << "\n";
-      std::printf(
+      std::fprintf(
+          report,
           "%s -> %s: %zu strokes, tool down %.0f mm, pen-up travel %.0f mm (%.0f mm in sheet order), ~%s\n",
           args->mesh.c_str(), r.target.c_str(), r.stats.strokes, r.stats.cut_length_mm,
           r.stats.travel_after_mm, r.stats.travel_before_mm, duration(r.stats.estimated_s).c_str());
     }
     if (simulated && !preview.empty())
-      std::printf("rendering of the simulated cut: %s%s\n", preview.c_str(),
-                  reports.size() > 1 ? " (one per sheet)" : "");
+      std::fprintf(report, "rendering of the simulated cut: %s%s\n", preview.c_str(),
+                   reports.size() > 1 ? " (one per sheet)" : "");
   });
 }
 

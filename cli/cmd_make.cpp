@@ -1,7 +1,9 @@
 // `foldkit make MESH -o model.pdf|svg|png`: load -> unfold -> lay out -> render, the main job.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -11,12 +13,15 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/devices/bundle.hpp"
 #include "foldkit/devices/dxf.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
+#include "foldkit/layout/guide.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
+#include "output_paths.hpp"
 #include "pipeline.hpp"
 
 namespace foldkit::cli {
@@ -25,10 +30,12 @@ namespace {
 struct MakeArgs {
   std::string mesh;
   std::string output;
+  std::string format;
   std::string bundle;
   double dpi = 150;
   bool json = false;
   bool quiet = false;
+  bool no_guide = false;
   std::string mountain = "dash-dot", valley = "dashed";
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;
@@ -53,13 +60,33 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"tab_area_mm2", s.tab_area_mm2}};
 }
 
-// DXF goes through its own writer (stroke-font labels, layers); everything else through Cairo.
-std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
-                                                const devices::RenderOptions& render) {
+// The format named by --format, else by the output's extension ("-": PDF). Throws a usage error.
+std::string output_format(const std::string& output, const std::string& format) {
+  if (!format.empty()) return format;
+  if (output == "-") return "pdf";
   std::string ext = std::filesystem::path(output).extension().string();
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".dxf") return devices::render_sheets(sheets, output, render);
+  if (ext == ".pdf" || ext == ".svg" || ext == ".png" || ext == ".dxf") return ext.substr(1);
+  throw Error("-o " + output + ": output must end in .pdf, .svg, .png or .dxf (or give --format)",
+              ExitCode::Usage);
+}
+
+// Sheets an earlier, longer run left under the same name would be taken for part of this one.
+std::string remove_stale_files(const std::string& output, std::size_t sheet_count) {
+  if (devices::resolve_output(output).kind != devices::OutputKind::File) return "";
+  const auto removed = devices::remove_stale_sheet_files(output, sheet_count);
+  if (removed.empty()) return "";
+  std::string note = "removed " + std::to_string(removed.size()) +
+                     " sheet file(s) of an earlier run: " + removed.front().string();
+  if (removed.size() > 1) note += " ... " + removed.back().string();
+  return note;
+}
+
+// DXF goes through its own writer (stroke-font labels, layers); everything else through Cairo.
+std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
+                                                const devices::RenderOptions& render) {
+  if (render.format != "dxf") return devices::render_sheets(sheets, output, render);
   const devices::StrokeFont font = devices::load_stroke_font(devices::default_stroke_font_path());
   return devices::write_dxf_sheets(sheets, output, {&font});
 }
@@ -133,15 +160,11 @@ void setup_make(CLI::App& app) {
       "make", "Unfold a mesh and lay it out on sheets: PDF, SVG, PNG, DXF or a hand-off bundle");
   cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", args->output,
-                  "Output file: .pdf (one page per sheet), .svg, .png or .dxf (one file per sheet)")
-      ->check([](const std::string& path) -> std::string {
-        std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-        for (char& c : ext)
-          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return ext == ".pdf" || ext == ".svg" || ext == ".png" || ext == ".dxf"
-                   ? ""
-                   : "output must end in .pdf, .svg, .png or .dxf";
-      });
+                  "Output file: .pdf (one page per sheet), .svg, .png or .dxf (one file per sheet); - for "
+                  "standard output");
+  cmd->add_option("--format", args->format,
+                  "Output format when -o has no such extension (default for -: pdf)")
+      ->check(CLI::IsMember({"pdf", "svg", "png", "dxf"}));
   cmd->add_option(
       "--bundle", args->bundle,
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
@@ -158,24 +181,36 @@ void setup_make(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+  cmd->add_flag("--no-guide", args->no_guide,
+                "No assembly guide (a last PDF page, or NAME-guide.svg/.png beside SVG and PNG sheets)");
   add_layout_options(*cmd, args->layout);
   add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
   cmd->callback([args] {
     if (args->output.empty() && args->bundle.empty())
       throw Error("make needs -o FILE or --bundle DIR (or both)", ExitCode::Usage);
+    const std::string format = args->output.empty() ? "" : output_format(args->output, args->format);
+    const bool to_stdout = args->output == "-";
+    if (to_stdout && args->json)
+      throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
+    const std::vector<std::filesystem::path> inputs{args->mesh, args->unfold.cut_file,
+                                                    args->unfold.keep_file};
+    refuse_output_over_inputs("-o", args->output, inputs);
     finish_unfold_options(args->unfold);
-    const layout::LayoutOptions layout_options = to_layout_options(args->layout);
-    std::string ext = std::filesystem::path(args->output).extension().string();
-    for (char& c : ext)
-      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
+    layout::LayoutOptions layout_options = to_layout_options(args->layout);
+    layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
+    if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     ProgressLine line(!args->quiet);
     PipelineRun run =
         load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
     const layout::LayoutResult& r = run.layout;
 
+    if (format != "pdf") {
+      for (std::size_t i = 1; i < r.sheets.size(); ++i)
+        refuse_output_over_inputs("-o", sheet_output_path(args->output, i), inputs);
+    }
     devices::RenderOptions render;
+    render.format = format;
     render.png_dpi = args->dpi;
     render.mountain.dash_mm = fold_styles().at(args->mountain);
     render.valley.dash_mm = fold_styles().at(args->valley);
@@ -184,19 +219,56 @@ void setup_make(CLI::App& app) {
     apply_colour_render_options(args->colour, coloured, render);
     line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
     std::vector<std::filesystem::path> files;
-    if (!args->output.empty()) files = write_sheets(r.sheets, args->output, render);
+    int guide_pages = 0;
+    std::size_t sheet_files = 0;
+    if (!args->output.empty()) {
+      const bool pdf = format == "pdf", picture = format == "svg" || format == "png";
+      // A guide beside SVG/PNG sheets is one more file, which standard output cannot hold.
+      const bool guide_wanted = !args->no_guide && (pdf || (picture && !to_stdout));
+      if (guide_wanted) {
+        line.update("drawing the assembly guide");
+        layout::GuideOptions guide_options;
+        guide_options.paper_mm = layout_options.paper_mm;
+        guide_options.margin_mm = layout_options.margin_mm;
+        guide_options.model_name = layout_options.model_name;
+        const Sheet guide =
+            layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
+        guide_pages = 1;
+        if (pdf) {
+          // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
+          std::vector<Sheet> pages = r.sheets;
+          pages.push_back(guide);
+          files = write_sheets(pages, args->output, render);
+          sheet_files = files.size();
+        } else {
+          files = write_sheets(r.sheets, args->output, render);
+          sheet_files = files.size();
+          std::filesystem::path guide_path = args->output;
+          guide_path.replace_filename(guide_path.stem().string() + "-guide" +
+                                      guide_path.extension().string());
+          const auto written = devices::render_sheets({guide}, guide_path, render);
+          files.insert(files.end(), written.begin(), written.end());
+        }
+      } else {
+        files = write_sheets(r.sheets, args->output, render);
+        sheet_files = files.size();
+      }
+    }
     if (!args->bundle.empty()) {
       line.update("writing the bundle");
       const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm);
       files.insert(files.end(), bundled.begin(), bundled.end());
     }
     line.clear();
+    const std::string stale =
+        format == "pdf" || format.empty() ? "" : remove_stale_files(args->output, sheet_files);
 
     const unfold::Unfolding& u = run.unfolded.result.unfolding;
     std::vector<std::string> notes = run.unfolded.loaded.notes;
     notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
     notes.insert(notes.end(), r.notes.begin(), r.notes.end());
     if (const std::string remedy = label_remedy(r, u.num_faces()); !remedy.empty()) notes.push_back(remedy);
+    if (!stale.empty()) notes.push_back(stale);
     if (args->json) {
       nlohmann::json sheets = nlohmann::json::array();
       for (const layout::SheetStats& s : r.sheet_stats)
@@ -225,6 +297,7 @@ void setup_make(CLI::App& app) {
                        {"notes", notes},
                        {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
                        {"labels_crossing_lines", r.label_audit.crossing_lines},
+                       {"guide_pages", guide_pages},
                        {"labels_touching", r.label_audit.touching},
                        {"labels_turned", r.label_audit.turned},
                        {"letters_crossing_lines", r.label_audit.letters_crossing_lines},
@@ -239,7 +312,9 @@ void setup_make(CLI::App& app) {
     // With only --bundle, its README.txt (which lists the rest) stands for the files written.
     const std::string shown =
         args->output.empty() ? (std::filesystem::path(args->bundle) / "README.txt").string() : args->output;
-    std::printf(
+    // With -o - the sheets are on standard output: the summary must not be mixed into them.
+    std::fprintf(
+        to_stdout ? stderr : stdout,
         "%s: %d faces -> %d piece%s (%s) -> %zu sheet%s at %.0f mm, coverage %.0f%%, %d tabs (%d dropped) -> "
         "%s%s\n",
         args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",

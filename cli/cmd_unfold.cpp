@@ -15,6 +15,7 @@
 #include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/error.hpp"
 #include "layout_options.hpp"
+#include "output_paths.hpp"
 #include "pipeline.hpp"
 #include "unfold_options.hpp"
 
@@ -139,13 +140,19 @@ void setup_unfold(CLI::App& app) {
   auto args = std::make_shared<UnfoldArgs>();
   CLI::App* cmd = app.add_subcommand("unfold", "Unfold a mesh and write the flat net as OBJ");
   cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
-  cmd->add_option("-o,--output", args->output, "Flat net to write (.obj); face k is face k of the input");
+  cmd->add_option("-o,--output", args->output,
+                  "Flat net to write (.obj, or - for standard output); face k is face k of the input");
   cmd->add_flag("--json", args->json, "Print a JSON summary on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   add_unfold_options(*cmd, args->unfold);
   // With --size the net is cut into the parts `make` would lay out on that paper.
   add_layout_options(*cmd, args->layout);
   cmd->callback([args] {
+    const bool to_stdout = args->output == "-";
+    if (to_stdout && args->json)
+      throw Error("--json and the net would both go to standard output (-): choose one", ExitCode::Usage);
+    refuse_output_over_inputs("-o", args->output,
+                              {args->mesh, args->unfold.cut_file, args->unfold.keep_file});
     finish_unfold_options(args->unfold);
     const layout::LayoutOptions layout_options = to_layout_options(args->layout);
     ProgressLine line(!args->quiet);
@@ -177,10 +184,12 @@ void setup_unfold(CLI::App& app) {
         std::cerr << "note: " << n << "\n";
       for (const auto& n : run.result.notes)
         std::cerr << "note: " << n << "\n";
-      std::printf("%s: %d faces -> %d piece%s, %d cut edges (%d seams), %.3f s (%s)%s%s\n",
-                  args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s", cut_edges,
-                  u.seam_count(), run.result.seconds, run.result.method.c_str(),
-                  args->output.empty() ? "" : " -> ", args->output.c_str());
+      // With -o - the net is on standard output: the summary must not be mixed into it.
+      std::fprintf(to_stdout ? stderr : stdout,
+                   "%s: %d faces -> %d piece%s, %d cut edges (%d seams), %.3f s (%s)%s%s\n",
+                   args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s", cut_edges,
+                   u.seam_count(), run.result.seconds, run.result.method.c_str(),
+                   args->output.empty() ? "" : " -> ", args->output.c_str());
     }
   });
 }

@@ -8,8 +8,11 @@
 
 #include "commands.hpp"
 #include "foldkit/error.hpp"
+#include "interrupt.hpp"
 
 int main(int argc, char** argv) {
+  // First: every thread started later (worker pools) must inherit the blocked SIGINT/SIGTERM.
+  const foldkit::cli::SignalHandling signals;
   CLI::App app{"foldkit: turn a 3D triangle mesh into a papercraft sheet to print, cut, fold and glue"};
   app.set_version_flag("--version", FOLDKIT_VERSION);
   app.require_subcommand(1);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "foldkit/error.hpp"
 #include "test_paths.hpp"
@@ -16,6 +18,7 @@
 namespace fs = std::filesystem;
 using foldkit::OutputError;
 using foldkit::devices::AtomicFile;
+using foldkit::devices::AtomicFileSet;
 using foldkit::devices::write_file_atomically;
 
 namespace {
@@ -131,4 +134,113 @@ TEST(AtomicFile, AFileInTheCurrentDirectoryNeedsNoDirectoryPart) {
   write_file_atomically("plain.txt", std::string_view("here"));
   fs::current_path(old_cwd);
   EXPECT_EQ(read_all(dir / "plain.txt"), "here");
+}
+
+TEST(AtomicFile, ASymbolicLinkIsWrittenThroughAndStaysALink) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  fs::create_directory(dir / "real");
+  write_file_atomically(dir / "real" / "model.svg", std::string_view("old"));
+  fs::create_symlink("real/model.svg", dir / "link.svg");
+  write_file_atomically(dir / "link.svg", std::string_view("new"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link.svg"));
+  EXPECT_EQ(read_all(dir / "real" / "model.svg"), "new");
+  EXPECT_EQ(count_entries(dir / "real"), 1) << "the temporary lived beside the file the link names";
+  EXPECT_EQ(count_entries(dir), 2);
+}
+
+TEST(AtomicFile, ADanglingLinkCreatesTheFileItNames) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  fs::create_symlink("net.obj", dir / "link.obj");
+  write_file_atomically(dir / "link.obj", std::string_view("v 0 0 0"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link.obj"));
+  EXPECT_EQ(read_all(dir / "net.obj"), "v 0 0 0");
+}
+
+TEST(AtomicFile, AFifoIsWrittenIntoAndNeverReplaced) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  const fs::path fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = read_all(fifo); });
+  write_file_atomically(fifo, std::string_view("PU0,0;"));
+  reader.join();
+  EXPECT_EQ(received, "PU0,0;");
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "the node is still a FIFO, not a regular file renamed over it";
+  EXPECT_EQ(count_entries(dir), 1) << "no temporary file beside a node";
+}
+
+TEST(AtomicFile, ACharacterDeviceIsResolvedAsANodeNotAFile) {
+  EXPECT_EQ(foldkit::devices::resolve_output("/dev/null").kind, foldkit::devices::OutputKind::Node);
+  EXPECT_EQ(foldkit::devices::resolve_output("-").kind, foldkit::devices::OutputKind::Stdout);
+  AtomicFile null("/dev/null");
+  EXPECT_TRUE(null.temp_path().empty()) << "nothing is created in /dev";
+  null.stream() << "discarded";
+  null.commit();
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+}
+
+TEST(AtomicFile, SameFileIsToldByDeviceAndInodeThroughLinks) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  write_file_atomically(dir / "a.obj", std::string_view("v 0 0 0"));
+  fs::create_symlink("a.obj", dir / "soft.obj");
+  fs::create_hard_link(dir / "a.obj", dir / "hard.obj");
+  write_file_atomically(dir / "b.obj", std::string_view("v 0 0 0"));
+  EXPECT_TRUE(foldkit::devices::is_same_file(dir / "a.obj", dir / "soft.obj"));
+  EXPECT_TRUE(foldkit::devices::is_same_file(dir / "hard.obj", dir / "soft.obj"));
+  EXPECT_TRUE(foldkit::devices::is_same_file(dir / "." / "a.obj", dir / "a.obj"));
+  EXPECT_FALSE(foldkit::devices::is_same_file(dir / "a.obj", dir / "b.obj"));
+  EXPECT_FALSE(foldkit::devices::is_same_file(dir / "a.obj", dir / "missing.obj"));
+  EXPECT_FALSE(foldkit::devices::is_same_file("-", "-"));
+}
+
+TEST(AtomicFileSet, AllFilesAppearTogether) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  AtomicFileSet set;
+  set.add(dir / "m.svg").stream() << "one";
+  set.add(dir / "m-2.svg").stream() << "two";
+  EXPECT_EQ(count_entries(dir), 2) << "two temporaries, no target yet";
+  EXPECT_FALSE(fs::exists(dir / "m.svg"));
+  set.commit();
+  EXPECT_EQ(read_all(dir / "m.svg"), "one");
+  EXPECT_EQ(read_all(dir / "m-2.svg"), "two");
+  EXPECT_EQ(count_entries(dir), 2);
+}
+
+TEST(AtomicFileSet, AFailedRenamePutsTheFilesAlreadyReplacedBack) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  write_file_atomically(dir / "m.svg", std::string_view("old one"));
+  {
+    AtomicFileSet set;
+    set.add(dir / "m.svg").stream() << "new one";
+    set.add(dir / "m-2.svg").stream() << "new two";
+    set.add(dir / "m-3.svg").stream() << "new three";
+    // Sheet 2 cannot be renamed into place: a non-empty directory took its name meanwhile.
+    fs::create_directories(dir / "m-2.svg" / "x");
+    EXPECT_THROW(set.commit(), OutputError);
+  }
+  EXPECT_EQ(read_all(dir / "m.svg"), "old one") << "sheet 1 has its old contents back";
+  EXPECT_FALSE(fs::exists(dir / "m-3.svg"));
+  EXPECT_EQ(count_entries(dir), 2) << "no temporary or backup left: only m.svg and the directory";
+}
+
+TEST(AtomicFile, PendingTemporariesAreRemovedForAProcessEndingOnASignal) {
+  const fs::path dir = foldkit::test::temp_dir("atomic");
+  // In a child: the clean-up locks commits for good, as befits a process that is about to end.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    AtomicFile first(dir / "a.pdf");
+    AtomicFile second(dir / "b.svg");
+    first.stream() << "partial";
+    const bool both_exist = fs::exists(first.temp_path()) && fs::exists(second.temp_path());
+    foldkit::devices::remove_pending_temporaries();
+    ::_exit(both_exist && count_entries(dir) == 0 ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(count_entries(dir), 0);
 }

@@ -55,12 +55,27 @@ TEST(CliMake, TheReadmeCommandWritesAPdfThatPopplerReads) {
   const int sheets = report["sheet_count"];
   ASSERT_GE(sheets, 1);
   const std::string info = shell("pdfinfo " + pdf.string());
-  EXPECT_NE(info.find("Pages:           " + std::to_string(sheets)), std::string::npos) << info;
+  ASSERT_EQ(report["guide_pages"].get<int>(), 1);
+  EXPECT_NE(info.find("Pages:           " + std::to_string(sheets + 1)), std::string::npos) << info;
   EXPECT_NE(info.find("595.276 x 841.89 pts (A4)"), std::string::npos) << info;
   const std::string raster = shell("pdftoppm -r 20 -png " + pdf.string() + " " + (dir / "page").string());
   EXPECT_EQ(raster.rfind("FAILED", 0), std::string::npos) << raster;
   EXPECT_TRUE(fs::exists(dir / "page-1.png"));
   EXPECT_NEAR(report["size_mm"].get<double>(), 160, 1e-9);
+  // Every page says which sheet it is and carries the scale check; the file asks viewers not to scale.
+  for (int page = 1; page <= sheets + 1; ++page) {
+    const std::string text = shell("pdftotext -f " + std::to_string(page) + " -l " + std::to_string(page) +
+                                   " " + pdf.string() + " -");
+    const int k = std::min(page, sheets);  // the guide, last, says it follows the last sheet
+    EXPECT_NE(text.find(std::to_string(k) + "/" + std::to_string(sheets)), std::string::npos) << text;
+    EXPECT_NE(text.find("spot_350"), std::string::npos) << text;
+    EXPECT_NE(text.find("50 mm"), std::string::npos) << "page " << page;
+  }
+  EXPECT_NE(slurp(pdf).find("/ViewerPreferences << /PrintScaling /None >>"), std::string::npos);
+  if (have("qpdf")) {
+    const std::string check = shell("qpdf --check " + pdf.string() + " 2>&1");
+    EXPECT_NE(check.find("No syntax or stream encoding errors"), std::string::npos) << check;
+  }
 }
 
 TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {

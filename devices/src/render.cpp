@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "foldkit/devices/atomic_file.hpp"
@@ -81,10 +82,26 @@ std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::si
   return numbered;
 }
 
+std::vector<std::filesystem::path> remove_stale_sheet_files(const std::filesystem::path& path,
+                                                            std::size_t sheet_count) {
+  std::vector<std::filesystem::path> removed;
+  if (path == "-" || sheet_count == 0) return removed;
+  for (std::size_t k = sheet_count;; ++k) {
+    const std::filesystem::path stale = sheet_file_path(path, k);
+    std::error_code ec;
+    const auto status = std::filesystem::symlink_status(stale, ec);
+    if (ec || !(std::filesystem::is_regular_file(status) || std::filesystem::is_symlink(status))) break;
+    if (!std::filesystem::remove(stale, ec) || ec)
+      throw OutputError(stale.string(), "cannot remove this sheet of an earlier run: " + ec.message());
+    removed.push_back(stale);
+  }
+  return removed;
+}
+
 std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
                                                  const std::filesystem::path& path,
                                                  const RenderOptions& options) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = options.format.empty() ? lower_extension(path) : "." + options.format;
   if (ext != ".pdf" && ext != ".svg" && ext != ".png") {
     throw OutputError(path.string(),
                       "unknown output type '" + path.extension().string() + "' (use .pdf, .svg or .png)");
@@ -94,9 +111,14 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
   if (ext == ".pdf") {
     AtomicFile file(path);
     std::string error;
-    if (!detail::write_pdf(file.stream(), sheets, options, path.stem().string(), error)) {
+    // Drawn into memory first: the scaling preference is appended once Cairo has finished the file.
+    std::ostringstream bytes;
+    if (!detail::write_pdf(bytes, sheets, options, path.stem().string(), error)) {
       throw OutputError(path.string(), error);
     }
+    std::string pdf = std::move(bytes).str();
+    detail::ask_viewers_not_to_scale(pdf);
+    file.stream().write(pdf.data(), static_cast<std::streamsize>(pdf.size()));
     file.commit();
     return {path};
   }
@@ -104,28 +126,28 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
   if (ext == ".png" && !(std::isfinite(options.png_dpi) && options.png_dpi > 0)) {
     throw OutputError(path.string(), "PNG resolution must be a positive number of dots per inch");
   }
-  // All files are completed before the first rename so that a failure on sheet 3 does not leave
-  // sheets 1 and 2 of a new run beside sheet 3 of an old one.
-  std::vector<AtomicFile> files;
-  files.reserve(sheets.size());
+  if (sheets.size() > 1 && resolve_output(path).kind != OutputKind::File) {
+    throw OutputError(path.string(), "SVG and PNG are one file per sheet and the layout has " +
+                                         std::to_string(sheets.size()) +
+                                         " sheets: give a file name, or write PDF");
+  }
+  // Every file is complete before the first rename, and a rename that fails puts the earlier ones
+  // back, so a run never leaves sheets 1 and 2 of a new layout beside sheet 3 of an old one.
+  AtomicFileSet files;
   const double cap_ratio = ext == ".svg" ? detail::cap_height_ratio(options.font_family) : 0;
   for (std::size_t i = 0; i < sheets.size(); ++i) {
-    files.emplace_back(sheet_file_path(path, i));
+    AtomicFile& file = files.add(sheet_file_path(path, i));
     if (ext == ".svg") {
-      detail::write_svg(files.back().stream(), sheets[i], options, cap_ratio);
+      detail::write_svg(file.stream(), sheets[i], options, cap_ratio);
     } else {
       std::string error;
-      if (!detail::write_png(files.back().stream(), sheets[i], options, error)) {
-        throw OutputError(files.back().target().string(), error);
+      if (!detail::write_png(file.stream(), sheets[i], options, error)) {
+        throw OutputError(file.target().string(), error);
       }
     }
   }
-  std::vector<std::filesystem::path> written;
-  for (AtomicFile& file : files) {
-    file.commit();
-    written.push_back(file.target());
-  }
-  return written;
+  files.commit();
+  return files.targets();
 }
 
 }  // namespace foldkit::devices

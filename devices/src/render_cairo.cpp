@@ -74,6 +74,13 @@ void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, P
   for (const Path& path : sheet.paths) {
     if (path.role != role || path.points_mm.empty()) continue;
     trace(cr, path);
+    if (path.filled && path.tint >= 0) {
+      // Guide views: the outline in the fill colour closes hairline gaps between neighbouring faces.
+      set_source(cr, shaded_fill(path));
+      cairo_fill_preserve(cr);
+      cairo_stroke(cr);
+      continue;
+    }
     if (path.filled) {
       set_source(cr, style.stroke);
       cairo_fill_preserve(cr);
@@ -127,6 +134,34 @@ double measure_cap_ratio(cairo_t* cr, const std::string& family) {
   return ratio > 0.3 && ratio < 1.2 ? ratio : 0.72;
 }
 
+// The legend of line styles in the box layout kept for it: each row a sample and its name.
+void draw_legend(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  if (sheet.legend_mm.empty()) return;
+  cairo_select_font_face(cr, options.font_family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLegendText_mm / cap_ratio);
+  for (std::size_t i = 0; i < kLegend.size(); ++i) {
+    const LegendRow& row = kLegend[i];
+    const RoleStyle& style = options.style(row.role);
+    const double y = sheet.legend_mm.min.y + kLegendRow_mm * (static_cast<double>(i) + 0.5);
+    const double x = sheet.legend_mm.min.x;
+    cairo_new_path(cr);
+    if (row.box) {
+      cairo_rectangle(cr, x, y - 1.5, kLegendSample_mm, 3);
+      set_source(cr, style.fill);
+      cairo_fill_preserve(cr);
+    } else {
+      cairo_move_to(cr, x, y);
+      cairo_line_to(cr, x + kLegendSample_mm, y);
+    }
+    apply_line_style(cr, style);
+    set_source(cr, style.stroke);
+    cairo_stroke(cr);
+    set_source(cr, options.sheet.stroke);
+    cairo_move_to(cr, x + kLegendSample_mm + 1.5, y + 0.5 * kLegendText_mm);
+    cairo_show_text(cr, row.name);
+  }
+}
+
 // The fills of a PDF page: one JPEG per sheet through a clip to the fills' outlines (see FillRaster).
 void paint_fill_raster(cairo_t* cr, const Sheet& sheet, const FillImages& images, double max_dpi) {
   FillRaster raster = raster_fills(sheet, images, max_dpi);
@@ -160,6 +195,7 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, d
   for (PathRole role : kPaintOrder)
     draw_paths(cr, sheet, options, role);
   draw_texts(cr, sheet, options, cap_ratio);
+  draw_legend(cr, sheet, options, cap_ratio);
 }
 
 }  // namespace

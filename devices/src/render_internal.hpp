@@ -33,6 +33,28 @@ inline Rgb tint_colour(int tint) {
   return kPalette[static_cast<std::size_t>(tint) % kPalette.size()];
 }
 
+/// One row of the legend of line styles: a sample of `role` drawn `sample` (a line, or a filled box
+/// for tabs) and its name.
+struct LegendRow {
+  PathRole role;
+  const char* name;
+  bool box;
+};
+inline constexpr std::array<LegendRow, 4> kLegend = {{{PathRole::Cut, "cut", false},
+                                                      {PathRole::Mountain, "mountain fold", false},
+                                                      {PathRole::Valley, "valley fold", false},
+                                                      {PathRole::Tab, "glue tab", true}}};
+/// Row pitch and sample length of the legend (mm), and its text's cap height.
+inline constexpr double kLegendRow_mm = 5.5, kLegendSample_mm = 8, kLegendText_mm = 2.2;
+
+/// The colour of a filled, tinted path (the guide's part colours): the tint lightened, times its shade.
+inline Rgb shaded_fill(const Path& path) {
+  constexpr double kLighten = 0.35;
+  const Rgb t = tint_colour(path.tint);
+  auto mix = [&](double c) { return (c + kLighten * (1 - c)) * path.shade; };
+  return {mix(t.r), mix(t.g), mix(t.b)};
+}
+
 /// The style `role` is drawn in on `sheet`: fold lines lightened or hidden as options.fold_lines says,
 /// tabs unfilled on coloured sheets (their fills are the sheet's). nullopt: the role is not drawn.
 std::optional<RoleStyle> sheet_style(const RenderOptions& options, const Sheet& sheet, PathRole role);
@@ -47,6 +69,11 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
 /// Writes all sheets as one PDF document, one page per sheet. Returns false with `error` set on failure.
 bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const RenderOptions& options,
                const std::string& title, std::string& error);
+
+/// Appends to a finished PDF an incremental update whose catalog asks viewers to print at 100%
+/// (/ViewerPreferences << /PrintScaling /None >>). Returns false, leaving `pdf` untouched, when the
+/// file's structure is not the plain one Cairo writes.
+bool ask_viewers_not_to_scale(std::string& pdf);
 
 /// Writes one sheet as a PNG image at options.png_dpi. Returns false with `error` set on failure.
 bool write_png(std::ostream& out, const Sheet& sheet, const RenderOptions& options, std::string& error);

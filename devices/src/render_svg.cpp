@@ -92,6 +92,11 @@ void write_path(std::ostream& out, const Path& path, const RoleStyle& style) {
   }
   if (path.closed) out << " Z";
   out << "\"";
+  if (path.filled && path.tint >= 0) {
+    const std::string fill = colour(shaded_fill(path));
+    out << " stroke=\"" << fill << "\" fill=\"" << fill << "\"/>\n";
+    return;
+  }
   if (path.tint >= 0) out << " stroke=\"" << colour(tint_colour(path.tint)) << "\"";
   if (path.filled) {
     out << " fill=\"" << colour(style.stroke) << "\"";
@@ -140,6 +145,34 @@ void write_text(std::ostream& out, const Text& text, const RenderOptions& option
   out << " fill=\"" << colour(options.style(text.role).stroke) << "\">" << escape(text.text) << "</text>\n";
 }
 
+// The legend of line styles in the box layout kept for it, inside the sheet group.
+void write_legend(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+  if (sheet.legend_mm.empty()) return;
+  for (std::size_t i = 0; i < kLegend.size(); ++i) {
+    const LegendRow& row = kLegend[i];
+    const RoleStyle& style = options.style(row.role);
+    const double y = sheet.legend_mm.min.y + kLegendRow_mm * (static_cast<double>(i) + 0.5);
+    const double x = sheet.legend_mm.min.x;
+    out << "    <path d=\"M" << num(x) << " " << num(row.box ? y - 1.5 : y) << " L"
+        << num(x + kLegendSample_mm) << " " << num(row.box ? y - 1.5 : y);
+    if (row.box)
+      out << " L" << num(x + kLegendSample_mm) << " " << num(y + 1.5) << " L" << num(x) << " " << num(y + 1.5)
+          << " Z";
+    out << "\" stroke=\"" << colour(style.stroke) << "\" stroke-width=\"" << num(style.width_mm) << "\"";
+    if (!style.dash_mm.empty()) {
+      out << " stroke-dasharray=\"";
+      for (std::size_t d = 0; d < style.dash_mm.size(); ++d)
+        out << (d ? " " : "") << num(style.dash_mm[d]);
+      out << "\"";
+    }
+    out << " fill=\"" << (row.box ? colour(style.fill) : std::string("none")) << "\"/>\n";
+    out << "    <text x=\"" << num(x + kLegendSample_mm + 1.5) << "\" y=\"" << num(y + 0.5 * kLegendText_mm)
+        << "\" font-size=\"" << num(kLegendText_mm / cap_ratio) << "\" stroke=\"none\" font-family=\""
+        << escape(options.font_family) << "\" fill=\"" << colour(options.sheet.stroke) << "\">" << row.name
+        << "</text>\n";
+  }
+}
+
 }  // namespace
 
 void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
@@ -168,6 +201,7 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
       write_text(out, text, options, cap_ratio, !sheet.fills.empty());
     }
     if (any_text) out << "    </g>\n";
+    if (role == PathRole::Sheet) write_legend(out, sheet, options, cap_ratio);
     out << "  </g>\n";
   }
   out << "</svg>\n";

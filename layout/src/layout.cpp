@@ -8,6 +8,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/layout/arrows.hpp"
 #include "foldkit/layout/edge_numbers.hpp"
+#include "foldkit/layout/furniture.hpp"
 #include "foldkit/layout/hints.hpp"
 #include "foldkit/layout/label_audit.hpp"
 #include "foldkit/layout/label_text.hpp"
@@ -488,6 +489,19 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
       sheet.texts.push_back(
           make_text(block.lines[i], at, {1, 0}, 2.4, PathRole::Hint, -1, place.transform, paper_h));
     }
+  }
+
+  if (o.furniture) {
+    FurnitureOptions furniture;
+    furniture.model_name = o.model_name;
+    furniture.spacing_mm = o.spacing_mm;
+    std::vector<Box2> keep_out;
+    if (o.regmarks) keep_out = regmark_keep_out(o.paper_mm, o.regmark);
+    const std::vector<int> crowded = add_sheet_furniture(r.sheets, keep_out, furniture);
+    if (!crowded.empty())
+      r.notes.push_back(
+          std::to_string(crowded.size()) +
+          " sheet(s) had no free corner for the 1 in scale square (the 50 mm bar is in the margin)");
   }
 
   // Stats and notes.

@@ -16,6 +16,7 @@ enum class ExitCode : int {
   Layout = 5,   ///< the model cannot be laid out as asked (piece larger than the sheet…)
   Device = 6,   ///< device not found, busy, permission, timeout, out of bounds
   Interrupted = 130,
+  Terminated = 143,
 };
 
 /// Base of every foldkit exception. what() is one line, ready to show to a user.

@@ -27,6 +27,7 @@ enum class FoldLines { Normal, Light, None };
 
 struct RenderOptions {
   double png_dpi = 150;                    ///< resolution of PNG previews
+  std::string format;                      ///< "pdf", "svg" or "png"; empty: from the path's extension
   std::string font_family = "sans-serif";  ///< fontconfig family for texts (embedded in PDF)
   RoleStyle cut{{0, 0, 0}, 0.25, {}};
   RoleStyle mountain{{0.62, 0.12, 0.08}, 0.2, {2.5, 0.8, 0.4, 0.8}};  ///< dash-dot
@@ -51,8 +52,9 @@ struct RenderOptions {
 /// name-2.svg, …; one group per role with the role's name as id), .png (likewise, white background,
 /// options.png_dpi). Text heights are cap heights: a "Text" of height_mm h has capitals and digits
 /// h millimetres tall. Every file is written to a temporary file and renamed only once all files are
-/// complete, so a failure never leaves a half-written file. Throws OutputError naming the file.
-/// Returns the files written.
+/// complete, so a failure never leaves a half-written file. `path` may be "-" (standard output) or a
+/// device node (see atomic_file.hpp); SVG and PNG of more than one sheet need a file name. Throws
+/// OutputError naming the file. Returns the files written.
 std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
                                                  const std::filesystem::path& path,
                                                  const RenderOptions& options = {});
@@ -60,5 +62,11 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
 /// The file that sheet `index` (0-based) goes to when every sheet gets its own file:
 /// `path` itself for the first, name-2.ext, name-3.ext, … after it.
 std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::size_t index);
+
+/// Removes the numbered files an earlier run with more sheets left beside `path`: sheet_file_path(path,
+/// k) for k = `sheet_count`, `sheet_count`+1, … while such a file exists (so an unrelated name further
+/// on is never touched). Returns the files removed; throws OutputError naming one that cannot be.
+std::vector<std::filesystem::path> remove_stale_sheet_files(const std::filesystem::path& path,
+                                                            std::size_t sheet_count);
 
 }  // namespace foldkit::devices

@@ -41,6 +41,8 @@ struct LayoutOptions {
   bool arrows = false;        ///< coloured direction arrows per seam pair (seed Figure 1(c))
   bool hints = false;         ///< assembly step beside each number and an assembly-order list
   bool piece_letters = true;  ///< each part's letter (A, B, …) inside it
+  bool furniture = true;      ///< sheet number, model name, scale check and legend (furniture.hpp)
+  std::string model_name;     ///< printed beside the sheet number
 
   bool regmarks = false;  ///< Silhouette registration marks for print-and-cut
   RegMarkOptions regmark;

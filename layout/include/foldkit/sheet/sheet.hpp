@@ -49,6 +49,9 @@ struct Path {
   /// Paths that must be told apart within a role (the direction arrows of seam pairs) carry an index
   /// into the renderer's palette of distinguishable colours; -1 draws the role's own colour.
   int tint = -1;
+  /// A filled path with a tint is filled (and outlined) in the tint lightened for text to read on it,
+  /// times this: the lighting of the assembly guide's views. 1 for everything else.
+  double shade = 1;
 };
 
 /// A text on the sheet. `at_mm` is the left end of the baseline; the text runs along `angle_rad`
@@ -86,6 +89,9 @@ struct Sheet {
   Box2 printable_mm;  ///< area inside the margins; everything but registration marks lies inside it
   std::vector<Path> paths;
   std::vector<Text> texts;
+  /// Where the renderer draws a small legend of its line styles (cut, mountain, valley, tab); empty
+  /// for none. Layout keeps the box free; only the renderer knows the styles.
+  Box2 legend_mm;
   /// Colour under everything else, in order (faces, then tabs); empty for a white sheet.
   std::vector<Fill> fills;
   std::vector<SheetImage> images;  ///< the textures `fills` refer to

@@ -1,0 +1,34 @@
+#pragma once
+// The assembly guide: one page showing the model from four viewpoints (front, back and two
+// three-quarter views from above), every part filled in its own colour (Path::tint = its letter's
+// rank) and marked with its letter where it shows, so the builder sees where each part goes before
+// gluing. Drawn by depth-sorting the projected triangles (painter's algorithm); a small raster of the
+// painted result tells where each part is visible for its letter. With a glue order, the page lists
+// the steps by part.
+#include <string>
+#include <vector>
+
+#include "foldkit/layout/layout.hpp"
+#include "foldkit/sheet/sheet.hpp"
+#include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/unfolding.hpp"
+
+namespace foldkit::layout {
+
+struct GuideOptions {
+  Vec2 paper_mm{210, 297};
+  double margin_mm = 10;
+  std::string model_name;
+  double letter_mm = 4;  ///< cap height of the part letters on the views
+};
+
+/// The guide page for `unfolding` (of `mesh`) as laid out in `layout` (letters, sheets, glue order).
+/// Its paths are filled triangles in role Piece with Path::tint = the letter's rank and Path::shade
+/// the lighting; its texts are the letters (role Piece) and the titles (role Sheet).
+Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, const LayoutResult& layout,
+                  const GuideOptions& options = {});
+
+/// Rank of a part letter (A = 0, Z = 25, AA = 26, …): the tint its part gets on the guide.
+int letter_rank(const std::string& letter);
+
+}  // namespace foldkit::layout

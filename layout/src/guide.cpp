@@ -1,0 +1,263 @@
+#include "foldkit/layout/guide.hpp"
+
+#include "foldkit/layout/polygon.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace foldkit::layout {
+namespace {
+
+constexpr double kTitle_mm = 4;
+constexpr double kText_mm = 2.6;
+constexpr double kLine_mm = 4.2;
+constexpr int kRaster = 160;            // pixels a side of the visibility raster per view
+constexpr int kLeastVisiblePixels = 6;  // a part showing less than this gets no letter in the view
+
+struct View {
+  const char* name;
+  Vec3 eye;  // from the model towards the viewer
+};
+
+constexpr std::array<View, 4> kViews = {{{"front", {0, 0, 1}},
+                                         {"back", {0, 0, -1}},
+                                         {"front right, from above", {1, 0.8, 1}},
+                                         {"back left, from above", {-1, 0.8, -1}}}};
+
+struct Camera {
+  Vec3 right, up, eye;
+};
+
+Camera camera(Vec3 eye_direction) {
+  const Vec3 eye = normalized(eye_direction);
+  Vec3 world_up{0, 1, 0};
+  if (std::fabs(dot(world_up, eye)) > 0.99) world_up = {0, 0, 1};
+  const Vec3 right = normalized(cross(world_up, eye));
+  return {right, cross(eye, right), eye};
+}
+
+// One view drawn into `cell` (sheet frame, y down).
+void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
+               const std::vector<std::string>& letter_of_tint, const View& view, Vec3 centre, double radius,
+               const Box2& cell, const GuideOptions& o, Sheet& sheet) {
+  const Camera cam = camera(view.eye);
+  const Vec3 light = normalized(cam.eye + cam.up * 0.6 + cam.right * 0.3);
+  sheet.texts.push_back(
+      Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
+  const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
+  const double scale = 0.5 * std::min(area.width(), area.height()) / radius;
+  const Vec2 mid = 0.5 * (area.min + area.max);
+  auto project = [&](Vec3 p) {
+    const Vec3 d = p - centre;
+    return Vec2{mid.x + scale * dot(d, cam.right), mid.y - scale * dot(d, cam.up)};
+  };
+  const int n = mesh.num_faces();
+  std::vector<double> depth(n);
+  for (int f = 0; f < n; ++f) {
+    const auto t = mesh.corners(f);
+    depth[f] = dot((t[0] + t[1] + t[2]) * (1.0 / 3) - centre, cam.eye);
+  }
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
+
+  // Painted far to near; the raster keeps, per pixel, the part painted last.
+  std::vector<int> owner(kRaster * kRaster, -1);
+  const double px = std::max(area.width(), area.height()) / kRaster;
+  for (int f : order) {
+    const auto t = mesh.corners(f);
+    const Vec3 normal = cross(t[1] - t[0], t[2] - t[0]);
+    const double len = norm(normal);
+    if (!(len > 0)) continue;
+    const double facing = dot(normal, cam.eye) / len;
+    // Back faces show only through holes of open meshes: drawn dark, as an inside would look.
+    const double shade = facing > 0 ? 0.45 + 0.55 * std::max(0.0, dot(normal, light) / len) : 0.3;
+    Path tri{PathRole::Piece, {project(t[0]), project(t[1]), project(t[2])}, true, -1, true, tint_of_face[f]};
+    tri.shade = shade;
+    // Rasterise for visibility: pixel centres inside the projected triangle.
+    const Box2 b = bounds_of(tri.points_mm);
+    const int x0 = std::max(0, static_cast<int>((b.min.x - area.min.x) / px));
+    const int x1 = std::min(kRaster - 1, static_cast<int>((b.max.x - area.min.x) / px));
+    const int y0 = std::max(0, static_cast<int>((b.min.y - area.min.y) / px));
+    const int y1 = std::min(kRaster - 1, static_cast<int>((b.max.y - area.min.y) / px));
+    const auto& p = tri.points_mm;
+    const double area2 = cross(p[1] - p[0], p[2] - p[0]);
+    for (int y = y0; y <= y1 && area2 != 0; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const Vec2 c{area.min.x + (x + 0.5) * px, area.min.y + (y + 0.5) * px};
+        const double w0 = cross(p[1] - p[0], c - p[0]) / area2, w1 = cross(p[2] - p[1], c - p[1]) / area2,
+                     w2 = cross(p[0] - p[2], c - p[2]) / area2;
+        if (w0 >= 0 && w1 >= 0 && w2 >= 0) owner[y * kRaster + x] = tint_of_face[f];
+      }
+    sheet.paths.push_back(std::move(tri));
+  }
+
+  // Each visible part's letter at its visible pixel nearest the middle of what shows of it.
+  const int parts = static_cast<int>(letter_of_tint.size());
+  std::vector<double> sx(parts, 0), sy(parts, 0);
+  std::vector<int> count(parts, 0);
+  for (int i = 0; i < kRaster * kRaster; ++i)
+    if (owner[i] >= 0) {
+      sx[owner[i]] += i % kRaster;
+      sy[owner[i]] += i / kRaster;
+      count[owner[i]] += 1;
+    }
+  for (int part = 0; part < parts; ++part) {
+    if (count[part] < kLeastVisiblePixels) continue;
+    const Vec2 mean{sx[part] / count[part], sy[part] / count[part]};
+    double best = 1e300;
+    Vec2 at = mean;
+    for (int i = 0; i < kRaster * kRaster; ++i) {
+      if (owner[i] != part) continue;
+      const Vec2 q{static_cast<double>(i % kRaster), static_cast<double>(i / kRaster)};
+      const double d = norm(q - mean);
+      if (d < best) {
+        best = d;
+        at = q;
+      }
+    }
+    const Vec2 centre_mm{area.min.x + (at.x + 0.5) * px, area.min.y + (at.y + 0.5) * px};
+    const std::string& letter = letter_of_tint[part];
+    const double w = 0.75 * o.letter_mm * static_cast<double>(letter.size());
+    sheet.texts.push_back(
+        Text{letter, centre_mm + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1});
+  }
+}
+
+// "Glue order by part" lines: each part with the steps whose seams touch it, in letter order.
+std::vector<std::string> order_by_part(const unfold::Unfolding& u, const LayoutResult& r,
+                                       const std::vector<std::string>& letter_of_tint,
+                                       const std::vector<int>& tint_of_piece) {
+  std::vector<int> step_of_number(r.assembly.size() + 2, 0);
+  for (const AssemblyStep& s : r.assembly)
+    if (s.number >= 0 && s.number < static_cast<int>(step_of_number.size()))
+      step_of_number[s.number] = s.step;
+  const int parts = static_cast<int>(letter_of_tint.size());
+  std::vector<int> first(parts, 1 << 30), last(parts, 0);
+  for (std::size_t e = 0; e < u.edges.size() && e < r.seam_number.size(); ++e) {
+    const int number = r.seam_number[e];
+    if (number <= 0 || number >= static_cast<int>(step_of_number.size())) continue;
+    const int step = step_of_number[number];
+    for (int k = 0; k < 2; ++k) {
+      const int f = u.edges[e].face[k];
+      if (f < 0) continue;
+      const int part = tint_of_piece[u.piece_of_face[f]];
+      first[part] = std::min(first[part], step);
+      last[part] = std::max(last[part], step);
+    }
+  }
+  std::vector<std::string> lines{"Glue order by part (steps as printed beside the numbers):"};
+  std::string line;
+  for (int part = 0; part < parts; ++part) {
+    std::string entry = letter_of_tint[part] + ": ";
+    entry += last[part] == 0 ? std::string("-")
+                             : std::to_string(first[part]).append("-").append(std::to_string(last[part]));
+    if (!line.empty() && line.size() + entry.size() > 90) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : "   ") + entry;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+int letter_rank(const std::string& letter) {
+  int rank = 0;
+  for (char c : letter)
+    rank = 26 * rank + (c - 'A' + 1);
+  return rank - 1;
+}
+
+Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutResult& r,
+                  const GuideOptions& o) {
+  Sheet sheet;
+  sheet.size_mm = o.paper_mm;
+  sheet.printable_mm =
+      Box2{{o.margin_mm, o.margin_mm}, {o.paper_mm.x - o.margin_mm, o.paper_mm.y - o.margin_mm}};
+  const Box2& area = sheet.printable_mm;
+
+  // Tints by letter: part A gets palette colour 0, and so on.
+  const int pieces = u.piece_count;
+  std::vector<int> tint_of_piece(pieces, 0);
+  std::vector<std::string> letter_of_tint(pieces);
+  for (int p = 0; p < pieces; ++p) {
+    const std::string letter = p < static_cast<int>(r.piece_letters.size()) ? r.piece_letters[p] : "?";
+    tint_of_piece[p] = std::clamp(letter_rank(letter), 0, pieces - 1);
+    letter_of_tint[tint_of_piece[p]] = letter;
+  }
+  std::vector<int> tint_of_face(mesh.num_faces(), 0);
+  for (int f = 0; f < mesh.num_faces() && f < static_cast<int>(u.piece_of_face.size()); ++f)
+    tint_of_face[f] = tint_of_piece[u.piece_of_face[f]];
+
+  double y = area.min.y + kTitle_mm;
+  const std::string title =
+      (o.model_name.empty() ? std::string("Assembly guide") : o.model_name + ": assembly guide") + ", " +
+      std::to_string(pieces) + (pieces == 1 ? " part on " : " parts on ") + std::to_string(r.sheets.size()) +
+      (r.sheets.size() == 1 ? " sheet" : " sheets");
+  sheet.texts.push_back(Text{title, {area.min.x, y}, kTitle_mm, 0, PathRole::Sheet, -1});
+  // Like every sheet, the guide says where it belongs and carries the scale check (bottom margin).
+  const double foot = o.paper_mm.y - 0.5 * o.margin_mm + 1;
+  const std::string n = std::to_string(r.sheets.size());
+  sheet.texts.push_back(
+      Text{"guide, after sheet " + n + "/" + n, {area.min.x, foot}, kText_mm, 0, PathRole::Sheet, -1});
+  const Vec2 bar{area.max.x - 50, foot - 1};
+  sheet.paths.push_back(Path{PathRole::Sheet, {bar, bar + Vec2{50, 0}}, false, -1});
+  sheet.paths.push_back(Path{PathRole::Sheet, {bar + Vec2{0, -1.2}, bar + Vec2{0, 1.2}}, false, -1});
+  sheet.paths.push_back(Path{PathRole::Sheet, {bar + Vec2{50, -1.2}, bar + Vec2{50, 1.2}}, false, -1});
+  sheet.texts.push_back(Text{"50 mm", bar + Vec2{-12, 1}, kText_mm, 0, PathRole::Sheet, -1});
+  y += kLine_mm;
+  std::vector<std::string> notes{"Each part in its colour with its letter; where the parts are:"};
+  std::string where;
+  for (int t = 0; t < pieces; ++t)
+    for (int p = 0; p < pieces; ++p) {
+      if (tint_of_piece[p] != t || p >= static_cast<int>(r.placements.size())) continue;
+      const std::string entry = letter_of_tint[t] + " p" + std::to_string(r.placements[p].sheet + 1);
+      if (!where.empty() && where.size() + entry.size() > 90) {
+        notes.push_back(where);
+        where.clear();
+      }
+      where += (where.empty() ? "" : "   ") + entry;
+    }
+  if (!where.empty()) notes.push_back(where);
+  if (!r.assembly.empty()) {
+    const auto lines = order_by_part(u, r, letter_of_tint, tint_of_piece);
+    notes.insert(notes.end(), lines.begin(), lines.end());
+  }
+  // The notes go at the bottom; the views share what is left in a 2 x 2 grid.
+  const double notes_top = area.max.y - kLine_mm * static_cast<double>(notes.size());
+  for (std::size_t i = 0; i < notes.size(); ++i)
+    sheet.texts.push_back(Text{notes[i],
+                               {area.min.x, notes_top + kLine_mm * (static_cast<double>(i) + 0.7)},
+                               kText_mm,
+                               0,
+                               PathRole::Sheet,
+                               -1});
+
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& v : mesh.vertices) {
+    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+  }
+  const Vec3 centre = (lo + hi) * 0.5;
+  double radius = 0;
+  for (const Vec3& v : mesh.vertices)
+    radius = std::max(radius, norm(v - centre));
+  if (!(radius > 0) || mesh.num_faces() == 0) return sheet;
+
+  const double top = y + 2, gap = 4;
+  const double cell_w = 0.5 * (area.width() - gap), cell_h = 0.5 * (notes_top - top - 2 * gap);
+  for (std::size_t v = 0; v < kViews.size(); ++v) {
+    const double cx = area.min.x + static_cast<double>(v % 2) * (cell_w + gap);
+    const double cy = top + static_cast<double>(v / 2) * (cell_h + gap);
+    draw_view(mesh, tint_of_face, letter_of_tint, kViews[v], centre, radius,
+              Box2{{cx, cy}, {cx + cell_w, cy + cell_h}}, o, sheet);
+  }
+  return sheet;
+}
+
+}  // namespace foldkit::layout

@@ -1,0 +1,80 @@
+// Sheet furniture: number, name and scale check in a free corner, clear of parts and mark zones.
+#include <gtest/gtest.h>
+
+#include "foldkit/layout/furniture.hpp"
+#include "foldkit/layout/polygon.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+namespace {
+
+Sheet a4_with_part(std::vector<Vec2> outline) {
+  Sheet s;
+  s.size_mm = {210, 297};
+  s.printable_mm = Box2{{10, 10}, {200, 287}};
+  s.paths.push_back(Path{PathRole::Cut, std::move(outline), true, 0});
+  return s;
+}
+
+std::vector<Vec2> furniture_points(const Sheet& s) {
+  std::vector<Vec2> points;
+  for (const Path& p : s.paths)
+    if (p.role == PathRole::Sheet) points.insert(points.end(), p.points_mm.begin(), p.points_mm.end());
+  for (const Text& t : s.texts)
+    if (t.role == PathRole::Sheet) points.push_back(t.at_mm);
+  return points;
+}
+
+}  // namespace
+
+TEST(Furniture, EverySheetGetsItsNumberTheNameA50mmBarAnd1inSquareInAFreeCorner) {
+  std::vector<Sheet> sheets{a4_with_part({{10, 10}, {150, 10}, {150, 200}, {10, 200}}),
+                            a4_with_part({{20, 20}, {60, 20}, {60, 60}})};
+  const auto crowded = add_sheet_furniture(sheets, {}, FurnitureOptions{"cow"});
+  EXPECT_TRUE(crowded.empty());
+  for (std::size_t k = 0; k < sheets.size(); ++k) {
+    const Sheet& s = sheets[k];
+    bool number = false, bar_label = false;
+    for (const Text& t : s.texts) {
+      number = number || t.text == std::to_string(k + 1) + "/2  cow";
+      bar_label = bar_label || t.text == "50 mm";
+    }
+    EXPECT_TRUE(number && bar_label) << "sheet " << k + 1;
+    bool bar = false, square = false;
+    for (const Path& p : s.paths) {
+      if (p.role != PathRole::Sheet) continue;
+      if (p.points_mm.size() == 2 && std::abs(norm(p.points_mm[1] - p.points_mm[0]) - 50) < 1e-9) bar = true;
+      if (p.closed && p.points_mm.size() == 4 &&
+          std::abs(std::abs(signed_area(p.points_mm)) - 25.4 * 25.4) < 1e-6)
+        square = true;
+    }
+    EXPECT_TRUE(bar && square) << "sheet " << k + 1;
+    const Box2 block = bounds_of(furniture_points(s));
+    EXPECT_FALSE(block.overlaps(bounds_of(s.paths.front().points_mm))) << "the block keeps clear of the part";
+    EXPECT_TRUE(s.printable_mm.min.x <= block.min.x && block.max.x <= s.printable_mm.max.x);
+    EXPECT_TRUE(s.printable_mm.min.y <= block.min.y && block.max.y <= s.printable_mm.max.y);
+  }
+  EXPECT_FALSE(sheets[0].legend_mm.empty()) << "the legend goes on sheet 1";
+  EXPECT_TRUE(sheets[1].legend_mm.empty());
+}
+
+TEST(Furniture, KeepOutZonesAreRespected) {
+  std::vector<Sheet> sheets{a4_with_part({{10, 10}, {50, 10}, {50, 50}})};
+  // A zone over the bottom-right corner, as a mark would have.
+  const std::vector<Box2> zones{Box2{{120, 220}, {210, 297}}};
+  add_sheet_furniture(sheets, zones, FurnitureOptions{});
+  EXPECT_FALSE(bounds_of(furniture_points(sheets[0])).overlaps(zones[0]));
+}
+
+TEST(Furniture, AFullSheetGetsNumberAndBarInTheMarginAndIsReported) {
+  std::vector<Sheet> sheets{a4_with_part({{10, 10}, {200, 10}, {200, 287}, {10, 287}})};
+  const auto crowded = add_sheet_furniture(sheets, {}, FurnitureOptions{"cow"});
+  ASSERT_EQ(crowded, std::vector<int>{0});
+  for (Vec2 p : furniture_points(sheets[0]))
+    EXPECT_GT(p.y, 287) << "in the bottom margin";
+  bool number = false;
+  for (const Text& t : sheets[0].texts)
+    number = number || t.text == "1/1  cow";
+  EXPECT_TRUE(number);
+}

@@ -1,0 +1,95 @@
+// The assembly guide: every part drawn in its colour and marked with its letter.
+#include <gtest/gtest.h>
+
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "../devices/src/render_internal.hpp"
+#include "foldkit/devices/render.hpp"
+#include "foldkit/layout/guide.hpp"
+#include "foldkit/layout/split.hpp"
+#include "layout_fixtures.hpp"
+#include "test_paths.hpp"
+
+using namespace foldkit;
+using namespace foldkit::layout;
+
+namespace {
+
+struct Guided {
+  SplitResult split;
+  LayoutResult layout;
+  Sheet guide;
+};
+
+const Guided& spot_guide() {
+  static const Guided g = [] {
+    const auto& ex = test::unfolded_example("spot_350.obj");
+    LayoutOptions o;
+    o.size_mm = 150;
+    o.hints = true;
+    Guided out;
+    SplitLayout done = split_and_layout(ex.mesh, ex.unfolding, o);
+    out.split = std::move(done.split);
+    out.layout = std::move(done.layout);
+    out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
+    return out;
+  }();
+  return g;
+}
+
+}  // namespace
+
+TEST(Guide, EveryPartIsFilledInItsLettersColourAndMarkedWithItsLetter) {
+  const Guided& g = spot_guide();
+  const int parts = g.split.unfolding.piece_count;
+  ASSERT_GT(parts, 2);
+  std::set<int> tints;
+  for (const Path& p : g.guide.paths)
+    if (p.role == PathRole::Piece && p.filled) tints.insert(p.tint);
+  std::set<std::string> letters;
+  for (const Text& t : g.guide.texts)
+    if (t.role == PathRole::Piece) letters.insert(t.text);
+  for (int p = 0; p < parts; ++p) {
+    const std::string& letter = g.layout.piece_letters[p];
+    EXPECT_TRUE(tints.count(letter_rank(letter))) << letter;
+    EXPECT_TRUE(letters.count(letter)) << "part " << letter << " shows in no view";
+  }
+}
+
+TEST(Guide, TheRenderedGuideShowsEveryPartsColour) {
+  const Guided& g = spot_guide();
+  const std::filesystem::path png = test::temp_dir("guide") / "guide.png";
+  devices::RenderOptions options;
+  options.png_dpi = 100;
+  devices::render_sheets({g.guide}, png, options);
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(png.string().c_str(), &w, &h, &channels, 3);
+  ASSERT_NE(pixels, nullptr);
+  // The palette has twelve colours; parts beyond repeat them (their letters tell them apart).
+  const int parts = std::min(g.split.unfolding.piece_count, 12);
+  std::vector<int> seen(parts, 0);
+  for (int p = 0; p < parts; ++p) {
+    Path probe;
+    probe.tint = p;
+    const devices::Rgb base = devices::detail::shaded_fill(probe);
+    const double norm2 = base.r * base.r + base.g * base.g + base.b * base.b;
+    for (int i = 0; i < w * h; ++i) {
+      const double r = pixels[3 * i] / 255.0, gr = pixels[3 * i + 1] / 255.0, b = pixels[3 * i + 2] / 255.0;
+      // A lit face: the part's colour times a shade.
+      const double s = (r * base.r + gr * base.g + b * base.b) / norm2;
+      if (s < 0.5 || s > 1.02) continue;
+      const double err = std::hypot(r - s * base.r, gr - s * base.g, b - s * base.b);
+      seen[p] += err < 0.02;
+    }
+  }
+  stbi_image_free(pixels);
+  for (int p = 0; p < parts; ++p)
+    EXPECT_GT(seen[p], 50) << "colour of tint " << p;
+}
