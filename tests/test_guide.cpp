@@ -13,7 +13,6 @@
 #include "../devices/src/render_internal.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/layout/guide.hpp"
-#include "foldkit/layout/split.hpp"
 #include "layout_fixtures.hpp"
 #include "test_paths.hpp"
 
@@ -23,7 +22,7 @@ using namespace foldkit::layout;
 namespace {
 
 struct Guided {
-  SplitResult split;
+  unfold::PartsResult split;
   LayoutResult layout;
   Sheet guide;
 };
@@ -35,9 +34,8 @@ const Guided& spot_guide() {
     o.size_mm = 150;
     o.hints = true;
     Guided out;
-    SplitLayout done = split_and_layout(ex.mesh, ex.unfolding, o);
-    out.split = std::move(done.split);
-    out.layout = std::move(done.layout);
+    out.split = test::split_to_fit(ex.mesh, ex.unfolding, o);
+    out.layout = layout_sheets(out.split.unfolding, o);
     out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
     return out;
   }();
