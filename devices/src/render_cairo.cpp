@@ -8,6 +8,7 @@
 #include <memory>
 #include <ostream>
 
+#include "cairo_image.hpp"
 #include "render_fills.hpp"
 #include "render_internal.hpp"
 
@@ -20,15 +21,6 @@ constexpr double kPointsPerMm = 72.0 / kMmPerInch;
 constexpr int kMaxImageSide = 32767;
 // Width of the white halo around labels on coloured sheets, per millimetre of cap height.
 constexpr double kHaloPerCap = 0.35;
-
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
 cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
   auto* out = static_cast<std::ostream*>(closure);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "foldkit/error.hpp"
+#include "foldkit/geom/hull.hpp"
 
 namespace foldkit::layout {
 namespace {
@@ -230,24 +231,6 @@ std::vector<double> candidate_angles(const PackItem& item, int rotations) {
 }
 
 }  // namespace
-
-double min_area_rect_angle(std::span<const Vec2> points) {
-  Polygon hull = convex_hull(std::vector<Vec2>(points.begin(), points.end()));
-  double best_angle = 0, best_area = 1e300;
-  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-    Vec2 e = hull[(i + 1) % n] - hull[i];
-    if (norm(e) == 0) continue;
-    const double angle = -std::atan2(e.y, e.x);
-    Box2 box;
-    for (Vec2 p : hull)
-      box.add(rotated(p, angle));
-    if (box.width() * box.height() < best_area - 1e-9) {
-      best_area = box.width() * box.height();
-      best_angle = angle;
-    }
-  }
-  return best_angle;
-}
 
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
   const double cell = options.cell_mm;

@@ -17,25 +17,6 @@ Vec2 centroid(const Triangle2& t) {
   return (t[0] + t[1] + t[2]) * (1.0 / 3.0);
 }
 
-// The rotation at which min-area box of the points is smallest (for the long axis of a piece).
-double min_area_angle(const std::vector<Vec2>& points) {
-  const std::vector<Vec2> hull = convex_hull(points);
-  double best_angle = 0, best_area = 1e300;
-  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-    const Vec2 e = hull[(i + 1) % n] - hull[i];
-    if (norm(e) == 0) continue;
-    const double angle = -std::atan2(e.y, e.x);
-    Box2 box;
-    for (Vec2 p : hull)
-      box.add(rotated(p, angle));
-    if (box.width() * box.height() < best_area - 1e-9) {
-      best_area = box.width() * box.height();
-      best_angle = angle;
-    }
-  }
-  return best_angle;
-}
-
 // A part as the hull of its points and the last rotation at which it was seen to fit: most faces that
 // join a part fit at that rotation, which is a cheap test before the full search of fit_in_rect.
 struct Hull {
@@ -176,7 +157,7 @@ int grow_parts(const Unfolding& u, const std::vector<int>& faces, const Units& u
   std::vector<Vec2> points;
   for (int f : faces)
     points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
-  const double axis_angle = min_area_angle(points);
+  const double axis_angle = min_area_rect_angle(points);
   Box2 box;
   for (Vec2 p : points)
     box.add(rotated(p, axis_angle));

@@ -50,7 +50,4 @@ struct PackResult {
 /// deadline passes.
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options);
 
-/// The rotation (radians) that makes the points' axis-aligned bounding box smallest in area.
-double min_area_rect_angle(std::span<const Vec2> points);
-
 }  // namespace foldkit::layout

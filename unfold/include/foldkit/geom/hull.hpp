@@ -35,6 +35,26 @@ inline std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
   return hull;
 }
 
+/// The rotation (radians) that makes the points' axis-aligned bounding box smallest in area: the
+/// smallest box has a side on a hull edge, so only those rotations are tried.
+inline double min_area_rect_angle(std::span<const Vec2> points) {
+  const std::vector<Vec2> hull = convex_hull(std::vector<Vec2>(points.begin(), points.end()));
+  double best_angle = 0, best_area = 1e300;
+  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+    const Vec2 e = hull[(i + 1) % n] - hull[i];
+    if (norm(e) == 0) continue;
+    const double angle = -std::atan2(e.y, e.x);
+    Box2 box;
+    for (Vec2 p : hull)
+      box.add(rotated(p, angle));
+    if (box.width() * box.height() < best_area - 1e-9) {
+      best_area = box.width() * box.height();
+      best_angle = angle;
+    }
+  }
+  return best_angle;
+}
+
 /// The largest scale at which a shape fits a rectangle, and the rotation (radians, counter-clockwise)
 /// that reaches it.
 struct RectFit {
