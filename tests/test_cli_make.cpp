@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "foldkit/layout/label_text.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -112,9 +113,9 @@ TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
   const auto j = nlohmann::json::parse(run.out);
   ASSERT_EQ(j["parts"].size(), j["pieces"].get<std::size_t>());
   std::vector<int> faces;
-  char letter = 'A';
+  int rank = 0;
   for (const auto& part : j["parts"]) {
-    EXPECT_EQ(part["id"].get<std::string>(), std::string(1, letter++)) << "parts in letter order";
+    EXPECT_EQ(part["id"].get<std::string>(), layout::piece_letter(rank++)) << "parts in letter order";
     EXPECT_GE(part["sheet"].get<int>(), 1);
     EXPECT_LE(part["sheet"].get<int>(), j["sheet_count"].get<int>());
     for (int f : part["faces"])

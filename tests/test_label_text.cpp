@@ -22,15 +22,27 @@ TEST(LabelText, AmbiguousNumbersArePrintedWithATrailingPeriod) {
   EXPECT_EQ(number_text(12), "12");
 }
 
-TEST(LabelText, PartLettersRunLikeSpreadsheetColumns) {
+TEST(LabelText, PartLettersRunLikeSpreadsheetColumnsWithoutIAndO) {
   EXPECT_EQ(piece_letter(0), "A");
-  EXPECT_EQ(piece_letter(25), "Z");
-  EXPECT_EQ(piece_letter(26), "AA");
-  EXPECT_EQ(piece_letter(27), "AB");
-  EXPECT_EQ(piece_letter(51), "AZ");
-  EXPECT_EQ(piece_letter(52), "BA");
-  EXPECT_EQ(piece_letter(701), "ZZ");
-  EXPECT_EQ(piece_letter(702), "AAA");
+  EXPECT_EQ(piece_letter(7), "H");
+  EXPECT_EQ(piece_letter(8), "J");  // no I: "I 135" reads as 1135
+  EXPECT_EQ(piece_letter(12), "N");
+  EXPECT_EQ(piece_letter(13), "P");  // no O: "O 10" reads as 010
+  EXPECT_EQ(piece_letter(23), "Z");
+  EXPECT_EQ(piece_letter(24), "AA");
+  EXPECT_EQ(piece_letter(25), "AB");
+  EXPECT_EQ(piece_letter(47), "AZ");
+  EXPECT_EQ(piece_letter(48), "BA");
+  EXPECT_EQ(piece_letter(24 * 25 - 1), "ZZ");
+  EXPECT_EQ(piece_letter(24 * 25), "AAA");
+}
+
+TEST(LabelText, NoPartLetterHoldsAnIOrAnOAndEachReadsBackAsItsRank) {
+  for (int i = 0; i < 5000; ++i) {
+    const std::string letter = piece_letter(i);
+    EXPECT_EQ(letter.find_first_of("IO"), std::string::npos) << i << ": " << letter;
+    EXPECT_EQ(letter_rank(letter), i) << letter;
+  }
 }
 
 TEST(LabelText, ASeamLabelNamesItsMatesPartAndSheetOnlyWhenThoseDiffer) {
@@ -47,4 +59,11 @@ TEST(LabelText, TheSeamNumberIsReadBackFromAnyLabelForm) {
   EXPECT_EQ(seam_number_in("AA 16. p11"), 16);
   EXPECT_EQ(seam_number_in("(7)"), 7);
   EXPECT_EQ(seam_number_in("A"), 0);
+}
+
+TEST(LabelText, WhatIsNoPartLetterHasNoRank) {
+  EXPECT_EQ(letter_rank(""), -1);
+  EXPECT_EQ(letter_rank("I"), -1);
+  EXPECT_EQ(letter_rank("a"), -1);
+  EXPECT_EQ(letter_rank("AAAAAAAA"), -1);
 }

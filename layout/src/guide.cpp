@@ -166,13 +166,6 @@ std::vector<std::string> order_by_part(const unfold::Unfolding& u, const LayoutR
 
 }  // namespace
 
-int letter_rank(const std::string& letter) {
-  int rank = 0;
-  for (char c : letter)
-    rank = 26 * rank + (c - 'A' + 1);
-  return rank - 1;
-}
-
 Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutResult& r,
                   const GuideOptions& o) {
   Sheet sheet;

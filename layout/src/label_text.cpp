@@ -1,6 +1,7 @@
 #include "foldkit/layout/label_text.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 namespace foldkit::layout {
 
@@ -34,12 +35,31 @@ std::string number_text(int number) {
   return text;
 }
 
+namespace {
+// No I or O: beside a seam number ("I 135", "O 10") they read as the digits 1 and 0.
+constexpr std::string_view kLetters = "ABCDEFGHJKLMNPQRSTUVWXYZ";
+constexpr int kMaxLetters = 6;  // 24^6 parts: far beyond any sheet, and no int overflow below
+}  // namespace
+
 std::string piece_letter(int index) {
+  const int base = static_cast<int>(kLetters.size());
   std::string letters;
-  for (int n = index + 1; n > 0; n = (n - 1) / 26)
-    letters.push_back(static_cast<char>('A' + (n - 1) % 26));
+  for (int n = index + 1; n > 0; n = (n - 1) / base)
+    letters.push_back(kLetters[(n - 1) % base]);
   std::reverse(letters.begin(), letters.end());
   return letters;
+}
+
+int letter_rank(const std::string& letter) {
+  if (letter.empty() || letter.size() > kMaxLetters) return -1;
+  const int base = static_cast<int>(kLetters.size());
+  int rank = 0;
+  for (char c : letter) {
+    const std::size_t digit = kLetters.find(c);
+    if (digit == std::string_view::npos) return -1;
+    rank = base * rank + static_cast<int>(digit) + 1;
+  }
+  return rank - 1;
 }
 
 std::string seam_label_text(int number, const std::string& mate_letter, int mate_sheet) {

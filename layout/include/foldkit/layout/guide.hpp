@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/layout/label_text.hpp"  // letter_rank: the tint of a part
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/sheet/sheet.hpp"
 #include "foldkit/unfold/mesh.hpp"
@@ -27,8 +28,5 @@ struct GuideOptions {
 /// the lighting; its texts are the letters (role Piece) and the titles (role Sheet).
 Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, const LayoutResult& layout,
                   const GuideOptions& options = {});
-
-/// Rank of a part letter (A = 0, Z = 25, AA = 26, …): the tint its part gets on the guide.
-int letter_rank(const std::string& letter);
 
 }  // namespace foldkit::layout

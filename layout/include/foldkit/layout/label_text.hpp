@@ -14,8 +14,11 @@ bool reads_as_other_number_turned(int number);
 /// The number as printed: with a trailing period when it reads as another number turned ("6." "9.").
 std::string number_text(int number);
 
-/// The letter of part `index` (0-based): A … Z, AA … AZ, BA …, like spreadsheet columns.
+/// The letter of part `index` (0-based): A … Z, AA … AZ, BA …, like spreadsheet columns, but without I
+/// and O, which read as 1 and 0 beside the numbers.
 std::string piece_letter(int index);
+/// The inverse of piece_letter (A = 0, … Z = 23, AA = 24, …); -1 for anything that is no part letter.
+int letter_rank(const std::string& letter);
 
 /// The label of a seam side: the bare number inside one part; "B 12" when the mate is part B on the
 /// same sheet; "B 12 p3" when the mate is on sheet 3. `mate_letter` empty means the same part;
