@@ -74,7 +74,8 @@ std::vector<Part> sheet_parts(const Sheet& sheet) {
       }
     }
     // Two parts printed with the same letter would write one file twice: numbers keep them apart.
-    if (std::any_of(parts.begin(), parts.end(), [&](const Part& p) { return p.name == part.name; }))
+    const std::string& name = part.name;  // clang cannot capture a structured binding in C++20
+    if (std::any_of(parts.begin(), parts.end(), [&name](const Part& p) { return p.name == name; }))
       part.name = std::to_string(piece + 1);
     parts.push_back(std::move(part));
   }
