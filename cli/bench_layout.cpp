@@ -75,9 +75,8 @@ double median(std::vector<double> v) {
 }  // namespace
 
 void run_layout_bench(const LayoutBenchArgs& a) {
-  const fs::path corpus = a.corpus.empty() ? fs::path("../shared/meshes") : fs::path(a.corpus);
-  if (!fs::is_directory(corpus))
-    throw InputError(corpus.string(), "no such corpus directory (give --corpus DIR)");
+  const fs::path corpus = a.corpus;
+  if (!fs::is_directory(corpus)) throw InputError(corpus.string(), "no such folder of meshes");
   const auto paper = layout::parse_paper(a.paper);
   if (!paper) throw Error("--paper: unknown paper '" + a.paper + "'", ExitCode::Usage);
 
@@ -166,10 +165,14 @@ void run_layout_bench(const LayoutBenchArgs& a) {
     std::cout << out.dump(2) << "\n";
     return;
   }
+  char no_tab[96] = "no mesh of 350-1,000 faces at 150 mm";
+  if (mid_seams > 0)
+    std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm", mid_no_tab,
+                  mid_seams, 100 * share);
   std::printf(
       "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
-      "%.0f%%, seams without a tab %ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm, layout %.1f s\n",
-      sheets, bound, ratio, over, 100 * median(coverage), mid_no_tab, mid_seams, 100 * share, seconds);
+      "%.0f%%, seams without a tab %s, layout %.1f s\n",
+      sheets, bound, ratio, over, 100 * median(coverage), no_tab, seconds);
 }
 
 }  // namespace foldkit::cli

@@ -8,7 +8,7 @@
 namespace foldkit::cli {
 
 struct LayoutBenchArgs {
-  std::string corpus;  ///< directory of meshes; its lowpoly/ subdirectory is included
+  std::string corpus;  ///< folder of meshes; its lowpoly/ subfolder is included
   std::vector<double> sizes_mm{150, 250};
   std::string paper = "A4";
   int min_faces = 0, max_faces = 1000;

@@ -29,6 +29,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "foldkit/unfold/unfolding.hpp"
+#include "length_option.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -185,10 +186,7 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-void run_bench(const BenchArgs& a) {
-  fs::path corpus = a.corpus.empty() ? fs::path("../shared/meshes") : fs::path(a.corpus);
-  if (!fs::is_directory(corpus))
-    throw InputError(corpus.string(), "no such corpus directory (give --corpus DIR)");
+void run_bench(const BenchArgs& a, const fs::path& corpus) {
   fs::path reference = a.reference.empty() ? corpus.parent_path() / "reference" : fs::path(a.reference);
   std::vector<std::string> methods = split(a.methods, ',');
   for (const auto& m : methods)
@@ -342,21 +340,40 @@ void run_bench(const BenchArgs& a) {
   }
 }
 
+// The corpus named on the command line, else ../shared/meshes of a developer checkout run from the
+// project folder; a usage error saying what to pass when there is neither.
+fs::path corpus_folder(const std::string& given) {
+  const fs::path corpus = given.empty() ? fs::path("../shared/meshes") : fs::path(given);
+  if (fs::is_directory(corpus)) return corpus;
+  if (given.empty())
+    throw Error(
+        "bench needs a folder of meshes (.obj, .off, .stl, .ply): foldkit bench /path/to/meshes "
+        "(no ../shared/meshes here)",
+        ExitCode::Usage);
+  throw InputError(corpus.string(), "no such folder of meshes");
+}
+
 }  // namespace
 
 void setup_bench(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
-  CLI::App* cmd = app.add_subcommand("bench", "Benchmark the unfolding methods over a corpus of meshes");
-  cmd->add_option("--max-faces", a->max_faces, "Only meshes with at most N faces (default 5000)");
-  cmd->add_option("--min-faces", a->min_faces, "Only meshes with at least N faces");
+  CLI::App* cmd = app.add_subcommand("bench", "Benchmark the unfolding methods over a folder of meshes");
+  cmd->add_option("corpus,--corpus", a->corpus,
+                  "Folder of meshes to benchmark (default ../shared/meshes when run from a developer "
+                  "checkout)");
+  cmd->add_option("--max-faces", a->max_faces, "Only meshes with at most N faces (default 5000)")
+      ->check(number_in(0, 100e6, "faces"));
+  cmd->add_option("--min-faces", a->min_faces, "Only meshes with at least N faces")
+      ->check(number_in(0, 100e6, "faces"));
   cmd->add_option("--methods", a->methods, "Comma-separated methods to compare (default mst,search,ga)");
-  cmd->add_option("--time-limit", a->time_limit_s, "Seconds each run may take (default 120)");
+  cmd->add_option("--time-limit", a->time_limit_s, "Seconds each run may take (default 120)")
+      ->check(number_in(0.01, 1e6, "s"));
   cmd->add_option("--seed", a->seed, "Random seed of every run (default 1)");
-  cmd->add_option("--threads", a->threads, "Worker threads per run (0: all cores)");
+  cmd->add_option("--threads", a->threads, "Worker threads per run (0: all cores)")
+      ->check(number_in(0, 256, "threads"));
   cmd->add_flag("--json", a->json_out, "Print the rows and the summary as JSON");
-  cmd->add_option("--corpus", a->corpus, "Directory of meshes (default ../shared/meshes)");
   cmd->add_option("--reference", a->reference,
-                  "Directory of the reference CSVs (default CORPUS/../reference)");
+                  "Folder of the reference CSVs (default CORPUS/../reference; none: no reference columns)");
   cmd->add_option("--filter", a->filter, "Only meshes whose file name contains this text");
   auto layout = std::make_shared<bool>(false);
   cmd->add_flag(
@@ -367,19 +384,17 @@ void setup_bench(CLI::App& app) {
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");
   cmd->callback([a, layout, cmd] {
-    if (*layout) {
-      LayoutBenchArgs l;
-      l.corpus = a->corpus;
-      l.min_faces = a->min_faces;
-      if (cmd->count("--max-faces") > 0) l.max_faces = a->max_faces;
-      l.filter = a->filter;
-      if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
-      l.json_out = a->json_out;
-      run_layout_bench(l);
-    } else if (!a->one.empty())
-      run_one(*a);
-    else
-      run_bench(*a);
+    if (!a->one.empty()) return run_one(*a);
+    const fs::path corpus = corpus_folder(a->corpus);
+    if (!*layout) return run_bench(*a, corpus);
+    LayoutBenchArgs l;
+    l.corpus = corpus.string();
+    l.min_faces = a->min_faces;
+    if (cmd->count("--max-faces") > 0) l.max_faces = a->max_faces;
+    l.filter = a->filter;
+    if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
+    l.json_out = a->json_out;
+    run_layout_bench(l);
   });
 }
 

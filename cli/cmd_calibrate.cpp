@@ -2,7 +2,6 @@
 // (short cuts through the printed crosses, relative to the registration marks), checked on the simulated
 // device first; `--offset DX,DY[mm]` stores what the user measured, and every later `cut --regmarks` on
 // that device applies it.
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -24,6 +23,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/layout/calibration_page.hpp"
 #include "foldkit/layout/paper.hpp"
+#include "limits.hpp"
 #include "profile_options.hpp"
 #include "user_config.hpp"
 
@@ -38,21 +38,12 @@ struct CalibrateArgs {
   bool reset = false, verify = false, show = false, json = false;
 };
 
-// One signed length: "0.8", "-1.2mm", "0.1cm", "0.03in"; `unit` is the default when none is written.
-std::optional<double> signed_length_mm(std::string text, double unit_mm) {
-  double scale = unit_mm;
-  for (const auto& [suffix, mm] : {std::pair{"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}}) {
-    const std::string s(suffix);
-    if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
-      text.resize(text.size() - s.size());
-      scale = mm;
-      break;
-    }
-  }
-  double v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
-  return v * scale;
+// One signed length through the one length parser: "-1.2mm" is minus "1.2mm".
+std::optional<double> signed_length_mm(const std::string& text) {
+  const bool negative = !text.empty() && text[0] == '-';
+  const auto mm = layout::parse_non_negative_length_mm(negative ? text.substr(1) : text);
+  if (!mm) return std::nullopt;
+  return negative ? -*mm : *mm;
 }
 
 // "DX,DY" with a unit after either or after the pair ("0.8,-1.2mm": both mm; no unit: mm).
@@ -62,11 +53,13 @@ Vec2 parse_offset(const std::string& text) {
   };
   const auto comma = text.find(',');
   if (comma == std::string::npos) throw bad();
+  std::string xs = text.substr(0, comma);
   const std::string ys = text.substr(comma + 1);
-  double unit = 1;
-  for (const auto& [suffix, mm] : {std::pair{"cm", 10.0}, {"in", 25.4}})
-    if (ys.size() > 2 && ys.compare(ys.size() - 2, 2, suffix) == 0) unit = mm;
-  const auto x = signed_length_mm(text.substr(0, comma), unit), y = signed_length_mm(ys, 1);
+  // A unit written once, after the pair, is the unit of both numbers.
+  const auto unit_at = ys.find_last_not_of("abcdefghijklmnopqrstuvwxyz");
+  const auto xs_unit = xs.find_last_not_of("abcdefghijklmnopqrstuvwxyz");
+  if (unit_at != std::string::npos && xs_unit == xs.size() - 1) xs += ys.substr(unit_at + 1);
+  const auto x = signed_length_mm(xs), y = signed_length_mm(ys);
   if (!x || !y) throw bad();
   if (std::abs(*x) > devices::kMaxPrintCutOffsetMm || std::abs(*y) > devices::kMaxPrintCutOffsetMm) {
     char buf[160];
@@ -240,7 +233,9 @@ void setup_calibrate(CLI::App& app) {
   cmd->add_option("--device", args->device, "Device profile id (see `foldkit profiles`)")->required();
   cmd->add_option("--media", args->media, "Media profile id for the cut")->capture_default_str();
   cmd->add_option("--mat", args->mat, "Mat id of the device (default: its first)");
-  cmd->add_option("--paper", args->paper, "Paper of the calibration page")->capture_default_str();
+  cmd->add_option("--paper", args->paper, "Paper of the calibration page")
+      ->check(paper_in(kSheetSide))
+      ->capture_default_str();
   add_profile_options(*cmd, args->profiles);
   cmd->add_option("-o,--output", args->pdf, "Calibration page to print (default calibration-DEVICE.pdf)");
   cmd->add_option("--job", args->job,

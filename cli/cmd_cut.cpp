@@ -124,10 +124,10 @@ void setup_cut(CLI::App& app) {
   add_length_option(*cmd, "--overcut", args->overcut_mm, "Closed cuts continue this far past their start",
                     kOvercut);
   cmd->add_option("--sheet", args->sheet, "Only this sheet (1-based); default all")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1, kMaxSheets));
   cmd->add_option("--ready-timeout", args->ready_timeout_s,
                   "Longest wait for a busy or paused device before giving up, seconds")
-      ->check(CLI::Range(0.1, 3600.0))
+      ->check(number_in(0.1, 3600, "s"))
       ->capture_default_str();
   cmd->add_option("--sim-fault", args->sim_faults,
                   "Make the simulated device fail: not-ready, no-media, marks-not-found, disconnect=BYTES, "

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/mesh_stats.hpp"
+#include "length_option.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -182,7 +183,7 @@ void setup_inspect(CLI::App& app) {
   cmd->add_option("mesh", args->mesh, "Mesh file (.obj, .off, .stl, .ply, .gltf, .glb)")->required();
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->add_option("--max-faces", args->max_faces, "Decimate to at most N faces first")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(4, 100e6, "faces"));
   cmd->callback([args] {
     unfold::LoadOptions options;
     options.max_faces = args->max_faces;

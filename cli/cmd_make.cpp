@@ -170,7 +170,7 @@ void setup_make(CLI::App& app) {
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
       "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, README.txt");
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
-      ->check(CLI::Range(10.0, 2400.0))
+      ->check(number_in(10, 2400, "dpi"))
       ->capture_default_str();
   auto style_names = CLI::IsMember(fold_styles());
   cmd->add_option("--mountain", args->mountain, "Mountain fold style: dash-dot, dashed, dotted, solid")

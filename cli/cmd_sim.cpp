@@ -15,6 +15,7 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/paper.hpp"
+#include "limits.hpp"
 #include "profile_options.hpp"
 #include "sim_faults.hpp"
 
@@ -65,6 +66,7 @@ void setup_sim(CLI::App& app) {
   cmd->add_option("--device", args->device, "Device profile id whose machine runs the job")->required();
   cmd->add_option("--mat", args->mat, "Mat loaded (default: the machine's first)");
   cmd->add_option("--paper", args->paper, "The sheet loaded: " + layout::paper_names())
+      ->check(paper_in(kSheetSide))
       ->capture_default_str();
   cmd->add_option("--preview", args->preview, "Rendering of what was cut (.png or .svg)");
   cmd->add_option("--sim-fault", args->sim_faults,

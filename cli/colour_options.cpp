@@ -1,13 +1,13 @@
 #include "colour_options.hpp"
 
 #include "foldkit/layout/paper.hpp"
+#include "length_option.hpp"
 
 namespace foldkit::cli {
 namespace {
 
 std::optional<double> bleed_mm(const std::string& text) {
-  if (text == "0" || text == "0mm") return 0.0;
-  return layout::parse_length_mm(text);
+  return layout::parse_non_negative_length_mm(text);
 }
 
 // A bleed wider than this only wastes paper and pushes pieces apart.
@@ -16,11 +16,10 @@ constexpr double kMaxBleedMm = 10;
 }  // namespace
 
 void add_colour_options(CLI::App& cmd, ColourCliOptions& o) {
-  cmd.add_option("--bleed", o.bleed, "How far colour reaches past every cut line, e.g. 1mm (0 for none)")
-      ->check([](const std::string& text) -> std::string {
-        const auto mm = bleed_mm(text);
-        return mm && *mm <= kMaxBleedMm ? "" : "expected a length from 0 to 10mm such as 1mm or 0.5mm";
-      })
+  cmd.add_option("--bleed", o.bleed,
+                 "How far colour reaches past every cut line, e.g. 1mm (0 for none; up to " +
+                     format_length_mm(kMaxBleedMm) + ")")
+      ->transform(length_in({0, kMaxBleedMm}))
       ->capture_default_str();
   cmd.add_option("--tab-fill", o.tab_fill, "Glue tabs in the colour of the face they glue under, or white")
       ->check(CLI::IsMember({"face", "white"}))
@@ -32,7 +31,7 @@ void add_colour_options(CLI::App& cmd, ColourCliOptions& o) {
       ->check(CLI::IsMember({"auto", "normal", "light", "none"}))
       ->capture_default_str();
   cmd.add_option("--dpi-print", o.dpi_print, "Finest resolution textures are embedded at, dpi")
-      ->check(CLI::Range(50.0, 2400.0))
+      ->check(number_in(50, 2400, "dpi"))
       ->capture_default_str();
   cmd.add_flag("--no-colour,--no-color", o.no_colour, "Print white pieces even when the model has colours");
 }

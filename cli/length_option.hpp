@@ -1,7 +1,8 @@
 #pragma once
-// Lengths on the command line: every length option takes a number with an optional unit (mm, cm, in;
-// none: mm), through one parser (layout::parse_non_negative_length_mm), bounded to what a sheet or a
-// cutter can hold, with the bounds in the error ("--margin 1e300mm: must be between 0 mm and 200 mm").
+// Bounded values on the command line. Every length option takes a number with an optional unit (mm, cm,
+// in; none: mm), through one parser (layout::parse_non_negative_length_mm), bounded to what a sheet or a
+// cutter can hold, with the bounds in the error ("--margin 1e300mm: must be between 0 mm and 200 mm");
+// plain numbers (dpi, seconds, counts) get the same kind of bounds and message.
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -29,5 +30,9 @@ CLI::Option* add_length_option(CLI::App& cmd, const std::string& name, double& t
 
 /// A CLI11 check for a paper: a preset name or WxH with a unit, each side within `side`.
 CLI::Validator paper_in(LengthRange side);
+
+/// A CLI11 check for a plain number from `min` to `max` (both included), with the bounds in its message
+/// the way lengths have them ("--dpi 1e300: must be between 10 and 2400 dpi"); `unit` may be empty.
+CLI::Validator number_in(double min, double max, const std::string& unit = "");
 
 }  // namespace foldkit::cli

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "foldkit/error.hpp"
 #include "interrupt.hpp"
+#include "usage_errors.hpp"
 
 int main(int argc, char** argv) {
   // First: every thread started later (worker pools) must inherit the blocked SIGINT/SIGTERM.
@@ -16,10 +17,6 @@ int main(int argc, char** argv) {
   CLI::App app{"foldkit: turn a 3D triangle mesh into a papercraft sheet to print, cut, fold and glue"};
   app.set_version_flag("--version", FOLDKIT_VERSION);
   app.require_subcommand(1);
-  // One line per error, like every other foldkit message (CLI11 would add a "Run with --help" line).
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return std::string("foldkit: ") + e.what() + " (see --help)\n";
-  });
   foldkit::cli::setup_make(app);
   foldkit::cli::setup_unfold(app);
   foldkit::cli::setup_inspect(app);
@@ -32,7 +29,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : static_cast<int>(foldkit::ExitCode::Usage);
+    // --help and --version arrive as parse errors with exit code 0.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << foldkit::cli::usage_error_message(app, e);
+    return static_cast<int>(foldkit::ExitCode::Usage);
   } catch (const foldkit::Error& e) {
     std::cerr << "foldkit: " << e.what() << "\n";
     return static_cast<int>(e.exit_code());

@@ -5,13 +5,14 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/seams.hpp"
+#include "length_option.hpp"
 
 namespace foldkit::cli {
 
 void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   auto* group = "Unfolding";
   cmd.add_option("--max-faces", o.load.max_faces, "Decimate to at most N faces first (default: keep all)")
-      ->check(CLI::Range(4, 100'000'000))
+      ->check(number_in(4, 100e6, "faces"))
       ->group(group);
   cmd.add_option("--method", o.method, "Unfolding method: mst (baseline), search, ga, or default")
       ->check(CLI::IsMember({"default", "mst", "search", "ga"}))
@@ -20,13 +21,13 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--time-limit", o.unfold.time_limit_s,
                  "Seconds the command may take: the search or GA gets 3/4 of it, layout the rest; past it "
                  "the command stops with a message (default 60)")
-      ->check(CLI::Range(0.01, 1e6))
+      ->check(number_in(0.01, 1e6, "s"))
       ->group(group);
   cmd.add_option("--threads", o.unfold.threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 256))
+      ->check(number_in(0, 256, "threads"))
       ->group(group);
   cmd.add_option("--population", o.unfold.population, "GA population size (default 64)")
-      ->check(CLI::Range(4, 100000))
+      ->check(number_in(4, 100000))
       ->group(group);
   cmd.add_option("--lambda-p", o.unfold.lambda_p, "GA fitness weight of the piece count")->group(group);
   cmd.add_option("--lambda-l", o.unfold.lambda_l, "GA fitness weight of the outline length")->group(group);
@@ -37,7 +38,7 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
          "--flat-angle", o.flat_angle_deg,
          "Degrees within which a polygon, or a run of triangles, counts as one flat face that is never "
          "cut (default 0.5)")
-      ->check(CLI::Range(0.0, 30.0))
+      ->check(number_in(0, 30, "degrees"))
       ->group(group);
   cmd.add_option("--cut", o.cut_file,
                  "File of edges that must be cut: pairs of vertex numbers as the mesh file writes them")
@@ -47,7 +48,7 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--index-base", o.index_base,
                  "Number of the first vertex in --cut/--keep lists (default: the mesh format's own, OBJ 1, "
                  "OFF and PLY 0)")
-      ->check(CLI::Range(0, 1))
+      ->check(number_in(0, 1))
       ->group(group);
 }
 

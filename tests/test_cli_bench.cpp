@@ -44,3 +44,26 @@ TEST(CliBench, AnUnknownMethodIsAUsageError) {
   auto run = run_foldkit({"bench", "--corpus", dir.string(), "--methods", "mst,magic"});
   EXPECT_EQ(run.exit_code, 2) << run.err;
 }
+
+TEST(CliBench, TakesTheFolderAsAnArgumentFromAnyDirectory) {
+  const fs::path corpus = foldkit::test::temp_dir("bench-arg");
+  fs::copy_file(foldkit::test::example_mesh("spot_128.obj"), corpus / "spot_128.obj");
+  // Run from a folder with no ../shared beside it: nothing may come from the source tree.
+  const fs::path elsewhere = foldkit::test::temp_dir("bench-cwd");
+  const auto run =
+      foldkit::test::run_foldkit_in(elsewhere, {"bench", corpus.string(), "--methods", "mst", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  ASSERT_EQ(j["rows"].size(), 1u);
+  EXPECT_TRUE(j["rows"][0]["valid"].get<bool>()) << j.dump();
+}
+
+TEST(CliBench, WithoutAFolderOrASharedCorpusItSaysWhatToPass) {
+  const fs::path elsewhere = foldkit::test::temp_dir("bench-none") / "a" / "b";
+  fs::create_directories(elsewhere);
+  const auto run = foldkit::test::run_foldkit_in(elsewhere, {"bench"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("foldkit bench /path/to/meshes"), std::string::npos) << run.err;
+  const auto layout = foldkit::test::run_foldkit_in(elsewhere, {"bench", "--layout"});
+  EXPECT_EQ(layout.exit_code, 2) << layout.err;
+}

@@ -63,6 +63,10 @@ std::string slurp_file(const fs::path& p) {
 }  // namespace
 
 CliRun run_foldkit(const std::vector<std::string>& args) {
+  return run_foldkit_in({}, args);
+}
+
+CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args) {
   const fs::path dir = temp_dir("run_foldkit");
   auto quote = [](const std::string& s) {
     std::string q;
@@ -76,7 +80,8 @@ CliRun run_foldkit(const std::vector<std::string>& args) {
     q.push_back('\'');
     return q;
   };
-  std::string cmd = quote(foldkit_binary().string());
+  std::string cmd = cwd.empty() ? "" : "cd " + quote(cwd.string()) + " && exec ";
+  cmd += quote(foldkit_binary().string());
   for (const auto& a : args) {
     cmd.push_back(' ');
     cmd.append(quote(a));

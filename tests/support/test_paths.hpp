@@ -29,4 +29,6 @@ struct CliRun {
 };
 /// Runs the built foldkit with `args` (no shell interpretation of their contents), capturing output.
 CliRun run_foldkit(const std::vector<std::string>& args);
+/// As run_foldkit, with `cwd` as the working directory (what a user outside the source tree sees).
+CliRun run_foldkit_in(const std::filesystem::path& cwd, const std::vector<std::string>& args);
 }  // namespace foldkit::test
