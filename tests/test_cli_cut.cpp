@@ -24,10 +24,7 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using foldkit::test::slurp;
 
 // Runs foldkit in `dir` with arguments (each single-quoted), capturing stdout and stderr.
 CliRun run_foldkit(const fs::path& dir, const std::vector<std::string>& args) {
