@@ -240,4 +240,20 @@ TEST(Plan, CountsEveryStrokeAndItsLengthInTheStatistics) {
 }
 
 }  // namespace
+TEST(Plan, ThePenDrawsPartLettersBesideTheSeamNumbers) {
+  Sheet sheet = test::two_piece_sheet();
+  const Vec2 at = sheet.texts.front().at_mm + Vec2{0, -6};
+  sheet.texts.push_back({"B", at, 6, 0, PathRole::Piece, 0});
+  PlanOptions o;
+  o.draw_labels = true;
+  o.font = &font();
+  const Job job = plan_job(sheet, profiles().device("cameo4"), profiles().medium("copy-80"), o);
+  const Pass* draw = find_pass(job, PassKind::Draw);
+  ASSERT_NE(draw, nullptr);
+  int letter_strokes = 0;
+  for (const Stroke& s : draw->strokes)
+    letter_strokes += s.role == PathRole::Piece;
+  EXPECT_GE(letter_strokes, 2) << "a B takes its upright and its bowls";
+}
+
 }  // namespace foldkit::devices
