@@ -49,17 +49,25 @@ struct Label {
 /// neighbouring edges are close. Returns number per seam.
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams);
 
+/// What each side of each seam may print, per seam and side: `full` where it fits clear of every line
+/// and label (e.g. "B12 p3"), `brief` where only a shorter form does (e.g. "B12", when the sheets say
+/// which parts they hold); `brief` may be empty for "as full".
+struct SeamTexts {
+  std::vector<std::array<std::string, 2>> full, brief;
+};
+
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
-/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. `texts` (per
-/// seam and side, may be empty) is the longest text each side may print, e.g. "B12 p3"; without it a
-/// side prints number_text of its number. Obstacles are looked up through grids, so the time grows
-/// with the number of seams, not its square. `taken` (per piece, may be empty) are convex areas
-/// already used (part letters) that labels keep clear of like other labels.
+/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. Without
+/// `texts` (empty) a side prints number_text of its number. Every label first gets a spot at the
+/// legible minimum (the sides with the least room first), then the full text, the hint and a larger
+/// size where the room allows. Obstacles are looked up through grids, so the time grows with the number
+/// of seams, not its square. `taken` (per piece, may be empty) are convex areas already used (part
+/// letters) that labels keep clear of like other labels.
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& options,
-                                std::span<const std::array<std::string, 2>> texts = {},
+                                const SeamTexts& texts = {},
                                 std::span<const std::vector<Polygon>> taken = {});
 
 /// Length of `text` on the page at cap height `height_mm` under `options.char_width`.
