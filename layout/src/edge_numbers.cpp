@@ -60,6 +60,15 @@ double label_width_mm(const std::string& text, double height_mm, const LabelOpti
   return digits * options.char_width * height_mm;
 }
 
+double label_descent_mm(const std::string& text, double height_mm) {
+  // Below the baseline: DejaVu Sans "p" 0.21 em (0.29 of its 0.73 em cap height), Hershey futural 7 of
+  // 21 units; brackets 0.13 em (0.18) and 4 of 21.
+  constexpr double kDescender = 0.34, kBracket = 0.2;
+  if (text.find('p') != std::string::npos) return kDescender * height_mm;
+  if (text.find_first_of("()") != std::string::npos) return kBracket * height_mm;
+  return 0;
+}
+
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams) {
   std::vector<int> seam_at_edge;
   for (std::size_t s = 0; s < seams.size(); ++s) {
@@ -305,7 +314,10 @@ class LabelPlacer {
     label.height_mm = h;
     label.on_tab = on_tab;
     if (f.with_hint) label.hint = hint_of(side);
-    label.box_mm = label_box(at, dir, full_width(side, h, f), h);
+    // The foot of the box is `at`; descenders ("p2") need room below the baseline.
+    const double descent = std::max(label_descent_mm(label.text, h), label_descent_mm(label.hint, 0.75 * h));
+    label.at_mm = at + perp_ccw(dir) * descent;
+    label.box_mm = label_box(at, dir, full_width(side, h, f), h + descent);
     return label;
   }
 

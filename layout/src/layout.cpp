@@ -231,8 +231,12 @@ std::vector<Text> upright_label_texts(const Label& label, const std::string& tex
   Vec2 start = label.at_mm + label.dir * lead;
   Vec2 dir = label.dir;
   if (turn) {
-    // Read from the box's other end, glyphs growing towards the edge: the same rectangle.
-    start = label.at_mm + label.dir * (lead + total) + up * h;
+    // Read from the box's other end, glyphs growing towards the edge, descenders away from it: the same
+    // rectangle, from the descent below the baseline (at_mm) to the cap height.
+    const double box_height =
+        label.box_mm.size() >= 4 ? norm(label.box_mm[3] - label.box_mm[0]) : label.height_mm;
+    const double descent = box_height - label.height_mm;
+    start = label.at_mm + label.dir * (lead + total) + up * (h - descent);
     dir = -1.0 * label.dir;
   }
   std::vector<Text> out{make_text(text, start, dir, h, PathRole::Label, label.piece, t, paper_h)};
