@@ -76,7 +76,7 @@ TEST(Slits, ALeafAtAFlatVertexIsASlitAndOneAtAConePointIsNot) {
       (defect[v] < 0.2 ? flat : cones) += 1;
       if (defect[v] < 0.2) {
         EXPECT_LT(seam_gap_per_length(tree, e), SlitOptions{}.min_gap_per_length);
-      } else if (defect[v] > 0.6) {
+      } else if (defect[v] > 0.85) {
         EXPECT_GT(seam_gap_per_length(tree, e), SlitOptions{}.min_gap_per_length);
       }
     }

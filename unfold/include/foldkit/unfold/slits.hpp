@@ -14,9 +14,9 @@ namespace foldkit::unfold {
 
 struct SlitOptions {
   /// A seam within one piece is a slit when the two copies of each of its ends are closer than this
-  /// fraction of its length: the far end of a leaf's wedge then opens by less than about 30 degrees,
-  /// too little for a tab a third of the edge wide whose slants stay in the wedge.
-  double min_gap_per_length = 0.5;
+  /// fraction of its length: the far end of a leaf's wedge then opens by less than about 40 degrees,
+  /// too little for a tab of a third of the edge's length whose slants stay in the wedge.
+  double min_gap_per_length = 0.7;
   /// Passes over the slits; each pass tries every slit once and stops early when nothing improved.
   int max_passes = 6;
   /// Wall-clock budget; the tree is overlap-free after every move, so stopping early is safe.
