@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/unfold/flat_faces.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
@@ -36,7 +37,7 @@ struct UnfoldOptions {
   SeamConstraints seams;
   /// Triangles of a planar input polygon, and coplanar neighbours, within this angle of one normal are one
   /// flat face that is never cut (see flat_faces.hpp).
-  double flat_angle_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  double flat_angle_rad = kDefaultFlatAngleRad;
 };
 
 /// Progress report while unfolding; return false to cancel (the best result so far is returned).
