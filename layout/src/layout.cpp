@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-<<<<<<< HEAD
-#include <numbers>
-=======
 #include <map>
->>>>>>> main
+#include <numbers>
 #include <numeric>
 #include <span>
 
