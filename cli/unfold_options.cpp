@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <map>
+#include <numbers>
 
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/seams.hpp"
@@ -56,7 +57,7 @@ void finish_unfold_options(UnfoldCliOptions& o) {
   static const std::map<std::string, unfold::Method> methods = {
       {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
   if (auto it = methods.find(o.method); it != methods.end()) o.unfold.method = it->second;
-  o.unfold.flat_angle_rad = o.flat_angle_deg * 3.14159265358979323846 / 180.0;
+  o.unfold.flat_angle_rad = o.flat_angle_deg * std::numbers::pi / 180.0;
 }
 
 namespace {

@@ -12,7 +12,6 @@
 
 using namespace foldkit;
 using namespace foldkit::unfold;
-constexpr double kPi = std::numbers::pi;
 
 namespace {
 
@@ -27,7 +26,7 @@ Mesh octahedron() {
 Mesh fan(double wave) {
   std::vector<Vec3> v{{0, 0, 0}};
   for (int i = 0; i < 6; ++i) {
-    const double a = i * kPi / 3;
+    const double a = i * std::numbers::pi / 3;
     v.push_back({std::cos(a), std::sin(a), (i % 2 ? wave : -wave)});
   }
   std::vector<std::array<int, 3>> f;
@@ -45,13 +44,13 @@ double total_defect(const Mesh& m) {
 
 TEST(AngleSums, EachOctahedronVertexSeesFourEquilateralCorners) {
   for (double s : angle_sums(octahedron()))
-    EXPECT_NEAR(s, 4 * kPi / 3, 1e-12);
+    EXPECT_NEAR(s, 4 * std::numbers::pi / 3, 1e-12);
 }
 
 TEST(AngleDefects, OctahedronVerticesAreAllElliptic) {
   Mesh m = octahedron();
   for (double d : angle_defects(m))
-    EXPECT_NEAR(d, 2 * kPi / 3, 1e-12);
+    EXPECT_NEAR(d, 2 * std::numbers::pi / 3, 1e-12);
   for (VertexClass c : classify_vertices(m))
     EXPECT_EQ(c, VertexClass::Elliptic);
 }
@@ -81,8 +80,8 @@ TEST(AngleDefects, BoundaryVertexOfAFlatDiskHasPiMinusItsAngle) {
   // The rim vertices of a flat hexagon each see two 60-degree corners: pi - 2pi/3.
   Mesh m = fan(0.0);
   for (int v = 1; v < 7; ++v)
-    EXPECT_NEAR(angle_defects(m)[v], kPi / 3, 1e-12);
-  EXPECT_NEAR(total_defect(m), 2 * kPi, 1e-9);  // a disk: chi = 1
+    EXPECT_NEAR(angle_defects(m)[v], std::numbers::pi / 3, 1e-12);
+  EXPECT_NEAR(total_defect(m), 2 * std::numbers::pi, 1e-9);  // a disk: chi = 1
 }
 
 TEST(GaussBonnet, HoldsOnTheBundledExamples) {
@@ -90,7 +89,7 @@ TEST(GaussBonnet, HoldsOnTheBundledExamples) {
        {"spot_128.obj", "bob_128.obj", "spot_350.obj", "fish_350.obj", "penguin_500.obj"}) {
     Mesh m = load_mesh(test::example_mesh(name)).mesh;
     const MeshStats s = compute_mesh_stats(m);
-    EXPECT_NEAR(total_defect(m), 2 * kPi * s.euler_characteristic, 1e-8) << name;
+    EXPECT_NEAR(total_defect(m), 2 * std::numbers::pi * s.euler_characteristic, 1e-8) << name;
   }
 }
 
@@ -100,6 +99,6 @@ TEST(GaussBonnet, HoldsOnCorpusMeshesOfSeveralGenera) {
                            "tricky/two_components.obj", "tricky/quads_ngons.obj"}) {
     Mesh m = load_mesh(*test::shared_meshes() / name).mesh;
     const MeshStats s = compute_mesh_stats(m);
-    EXPECT_NEAR(total_defect(m), 2 * kPi * s.euler_characteristic, 1e-8) << name;
+    EXPECT_NEAR(total_defect(m), 2 * std::numbers::pi * s.euler_characteristic, 1e-8) << name;
   }
 }

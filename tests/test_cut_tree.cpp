@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -168,7 +169,7 @@ TEST(CutTree, CurvatureRuleForbidsFoldingASaddleDownToOneCutAndTheGeometryAgrees
   // star lies flat only when cut along at least two spokes.
   std::vector<Vec3> v{{0, 0, 0}};
   for (int i = 0; i < 6; ++i) {
-    const double a = i * 3.14159265358979 / 3;
+    const double a = i * std::numbers::pi / 3;
     v.push_back({std::cos(a), std::sin(a), (i % 2 ? 0.6 : -0.6)});
   }
   std::vector<std::array<int, 3>> f;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <set>
 #include <string>
 
@@ -99,7 +100,7 @@ TEST(FlatFaces, APolygonBentBeyondTheFlatAngleFoldsAndOneWithinItDoesNot) {
     m.face_polygon = {0, 0};
     return m;
   };
-  const double deg = 3.14159265358979323846 / 180;
+  const double deg = std::numbers::pi / 180;
   EXPECT_EQ(find_flat_faces(bent(std::tan(0.2 * deg)), 0.5 * deg).unit_count, 1);
   const FlatFaces folded = find_flat_faces(bent(std::tan(5 * deg)), 0.5 * deg);
   EXPECT_EQ(folded.unit_count, 2);
@@ -113,7 +114,7 @@ TEST(FlatFaces, AFlatFaceStaysATreeOfTrianglesAroundAnInnerVertex) {
   std::vector<Vec3> v = {{0, 0, 0}};
   std::vector<std::array<int, 3>> f;
   for (int k = 0; k < 6; ++k) {
-    const double a = k * 3.14159265358979323846 / 3;
+    const double a = k * std::numbers::pi / 3;
     v.push_back({std::cos(a), std::sin(a), 0});
     f.push_back({0, 1 + k, 1 + (k + 1) % 6});
   }

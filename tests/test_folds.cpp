@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "foldkit/layout/folds.hpp"
 #include "layout_fixtures.hpp"
@@ -33,7 +34,7 @@ TEST(Folds, OnRealMeshesEveryDrawnFoldIsBentEnoughAndEveryBentFoldIsDrawnOnce) {
   const auto& ex = test::unfolded_example("bob_350.obj");
   const auto pieces = scaled_pieces(ex.unfolding, 100);
   FoldOptions o;
-  o.flat_fold_rad = 5 * M_PI / 180;
+  o.flat_fold_rad = 5 * std::numbers::pi / 180;
   std::vector<int> drawn(ex.unfolding.edges.size(), 0);
   for (const ScaledPiece& p : pieces)
     for (const FoldLine& f : fold_lines(ex.unfolding, p, o)) {

@@ -1,5 +1,6 @@
 // The label audit counts what a reader would see wrong on the printed sheet.
 #include <gtest/gtest.h>
+#include <numbers>
 
 #include "foldkit/layout/label_audit.hpp"
 
@@ -43,7 +44,7 @@ TEST(LabelAudit, OverlappingLabelsCountAsTouchingBothOfThem) {
 
 TEST(LabelAudit, TextsTurnedBeyondAQuarterTurnAndUnmarkedAmbiguousNumbersAreCounted) {
   Sheet s = sheet_with_cut_square();
-  const double pi = 3.14159265358979323846;
+  const double pi = std::numbers::pi;
   s.texts.push_back(label("12", {60, 60}, 0.5 * pi - 0.01));
   s.texts.push_back(label("21", {60, 70}, -0.5 * pi));  // reads bottom to top: upright enough
   s.texts.push_back(label("22", {60, 80}, 0.5 * pi + 0.01));

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <regex>
 
 #include "foldkit/error.hpp"
@@ -371,7 +372,6 @@ TEST(Layout, UnusableOptionsAreLayoutErrors) {
 }
 
 TEST(Layout, NoLabelIsTurnedBeyondAQuarterTurnAndEveryAmbiguousNumberIsMarked) {
-  constexpr double kPi = 3.14159265358979323846;
   for (const char* name : kExamples) {
     const auto& ex = test::unfolded_example(name);
     LayoutOptions o = at_size(160);
@@ -382,8 +382,9 @@ TEST(Layout, NoLabelIsTurnedBeyondAQuarterTurnAndEveryAmbiguousNumberIsMarked) {
     int ambiguous = 0;
     for (const Sheet& sheet : r.sheets)
       for (const Text& t : sheet.texts) {
-        const double a = std::remainder(t.angle_rad, 2 * kPi);
-        EXPECT_TRUE(a >= -0.5 * kPi - 1e-9 && a < 0.5 * kPi) << name << ": \"" << t.text << "\" at " << a;
+        const double a = std::remainder(t.angle_rad, 2 * std::numbers::pi);
+        EXPECT_TRUE(a >= -0.5 * std::numbers::pi - 1e-9 && a < 0.5 * std::numbers::pi)
+            << name << ": \"" << t.text << "\" at " << a;
         if (t.role != PathRole::Label) continue;
         const int n = seam_number_in(t.text);
         if (!reads_as_other_number_turned(n)) continue;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "foldkit/layout/polygon.hpp"
 
@@ -41,7 +42,7 @@ TEST(Polygon, UnionOffsetAndIntersectionAreas) {
   EXPECT_NEAR(total_area(polygon_union(two)), 6, 1e-9);
   const std::vector<Polygon> one = {square(0, 0, 2)};
   // Grown by r: area + perimeter * r + pi r^2.
-  EXPECT_NEAR(total_area(polygon_offset(one, 0.5, 0.001)), 4 + 8 * 0.5 + M_PI * 0.25, 0.01);
+  EXPECT_NEAR(total_area(polygon_offset(one, 0.5, 0.001)), 4 + 8 * 0.5 + std::numbers::pi * 0.25, 0.01);
   const std::vector<Polygon> a = {square(0, 0, 2)}, b = {square(1, 1, 2)};
   EXPECT_NEAR(intersection_area(a, b), 1, 1e-9);
   const std::vector<Polygon> c = {square(2, 0, 2)};

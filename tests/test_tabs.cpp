@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/layout/polygon.hpp"
@@ -14,7 +15,7 @@ using namespace foldkit;
 using namespace foldkit::layout;
 
 TEST(Tabs, ATrapezoidLiesOutsideItsEdgeWithSlantedEnds) {
-  const Polygon quad = tab_trapezoid({0, 0}, {10, 0}, 3, M_PI / 4, M_PI / 4);
+  const Polygon quad = tab_trapezoid({0, 0}, {10, 0}, 3, std::numbers::pi / 4, std::numbers::pi / 4);
   ASSERT_EQ(quad.size(), 4u);
   EXPECT_GT(signed_area(quad), 0) << "counter-clockwise";
   EXPECT_NEAR(quad[1].x, 3, 1e-9);
@@ -24,7 +25,7 @@ TEST(Tabs, ATrapezoidLiesOutsideItsEdgeWithSlantedEnds) {
 }
 
 TEST(Tabs, OnAShortEdgeTheTabNarrowsInsteadOfComingToAPoint) {
-  const Polygon quad = tab_trapezoid({0, 0}, {4, 0}, 5, M_PI / 4, M_PI / 4);
+  const Polygon quad = tab_trapezoid({0, 0}, {4, 0}, 5, std::numbers::pi / 4, std::numbers::pi / 4);
   EXPECT_LT(std::fabs(quad[1].y), 2.0);
   EXPECT_GT(quad[2].x - quad[1].x, 0.3) << "the outer side keeps some length";
 }

@@ -3,6 +3,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 #include "foldkit/layout/box_grid.hpp"
 #include "foldkit/layout/edge_numbers.hpp"
@@ -13,7 +14,6 @@
 namespace foldkit::layout {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Overlaps shallower than this are contact, not crossing (placement keeps 0.25 mm).
 constexpr double kTouch_mm = 0.01;
 constexpr double kGridCell_mm = 4;
@@ -103,8 +103,8 @@ LabelAudit audit_labels(const Sheet& sheet) {
   for (std::size_t i = 0; i < sheet.texts.size(); ++i) {
     const Text& t = sheet.texts[i];
     if (!audited(t)) continue;
-    const double angle = std::remainder(t.angle_rad, 2 * kPi);
-    a.turned += angle >= 0.5 * kPi + 1e-6 || angle < -0.5 * kPi - 1e-6;
+    const double angle = std::remainder(t.angle_rad, 2 * std::numbers::pi);
+    a.turned += angle >= 0.5 * std::numbers::pi + 1e-6 || angle < -0.5 * std::numbers::pi - 1e-6;
     if (t.role != PathRole::Piece) a.unmarked += unmarked_numbers(t.text);
     const Box2 reach = bounds_of(boxes[i]);
     const bool crosses =

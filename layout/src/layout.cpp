@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <span>
 
@@ -208,7 +209,6 @@ Text make_text(const std::string& s, Vec2 at, Vec2 dir, double h, PathRole role,
 // more than 90 degrees from upright. The box stays the same, so what it keeps clear of still holds.
 std::vector<Text> upright_label_texts(const Label& label, const std::string& text, const Rigid2& t,
                                       double paper_h) {
-  constexpr double kPi = 3.14159265358979323846;
   const LabelOptions metrics;
   const double reserved = label.box_mm.size() >= 2 ? norm(label.box_mm[1] - label.box_mm[0]) : 0;
   auto width_at = [&](double height) {
@@ -226,7 +226,8 @@ std::vector<Text> upright_label_texts(const Label& label, const std::string& tex
   // Page angle, clockwise positive (y down); upright means within [-90, 90) degrees: vertical text
   // reads from the right, bottom to top.
   const double page_angle = std::atan2(-d.y, d.x);
-  const bool turn = page_angle >= 0.5 * kPi - 1e-9 || page_angle < -0.5 * kPi - 1e-9;
+  const bool turn =
+      page_angle >= 0.5 * std::numbers::pi - 1e-9 || page_angle < -0.5 * std::numbers::pi - 1e-9;
   const double lead = std::max(0.0, 0.5 * (reserved - total));
   Vec2 start = label.at_mm + label.dir * lead;
   Vec2 dir = label.dir;

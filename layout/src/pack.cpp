@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <numbers>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -15,7 +16,6 @@
 namespace foldkit::layout {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // 5 bytes a cell per open sheet: a 3 m x 3 m sheet in 0.5 mm cells is 36 million.
 constexpr double kMaxGridCells = 64e6;
 
@@ -208,22 +208,22 @@ std::vector<double> candidate_angles(const PackItem& item, int rotations) {
   std::vector<double> angles;
   const int n = std::max(rotations, 1);
   for (int k = 0; k < n; ++k)
-    angles.push_back(2 * kPi * k / n);
+    angles.push_back(2 * std::numbers::pi * k / n);
   std::vector<Vec2> points;
   for (const Polygon& p : item.shape_mm)
     points.insert(points.end(), p.begin(), p.end());
   const double tight = min_area_rect_angle(points);
   for (int k = 0; k < 4; ++k)
-    angles.push_back(tight + k * kPi / 2);
+    angles.push_back(tight + k * std::numbers::pi / 2);
   angles.insert(angles.end(), item.extra_angles_rad.begin(), item.extra_angles_rad.end());
   std::vector<double> unique;
   for (double a : angles) {
-    a = std::fmod(a, 2 * kPi);
-    if (a < 0) a += 2 * kPi;
+    a = std::fmod(a, 2 * std::numbers::pi);
+    if (a < 0) a += 2 * std::numbers::pi;
     bool seen = false;
     for (double u : unique) {
       double d = std::fabs(a - u);
-      seen |= std::min(d, 2 * kPi - d) < kPi / 360;
+      seen |= std::min(d, 2 * std::numbers::pi - d) < std::numbers::pi / 360;
     }
     if (!seen) unique.push_back(a);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "foldkit/layout/box_grid.hpp"
@@ -32,12 +33,11 @@ Circle incircle(const Triangle2& t) {
 }
 
 Polygon octagon(Vec2 centre, double radius) {
-  constexpr double kPi = 3.14159265358979323846;
   // Circumscribed: its sides touch the disc, so nothing clear of it touches the disc.
-  const double r = radius / std::cos(kPi / 8);
+  const double r = radius / std::cos(std::numbers::pi / 8);
   Polygon out;
   for (int i = 0; i < 8; ++i) {
-    const double a = kPi / 8 + i * kPi / 4;
+    const double a = std::numbers::pi / 8 + i * std::numbers::pi / 4;
     out.push_back(centre + Vec2{std::cos(a), std::sin(a)} * r);
   }
   return out;

@@ -58,24 +58,6 @@ Box2 bounds_of(std::span<const Vec2> points) {
   return box;
 }
 
-bool convex_overlap(std::span<const Vec2> a, std::span<const Vec2> b, double eps) {
-  // q is separated from p when, for some edge of p, every point of q lies outside that edge's line or
-  // within eps inside it.
-  auto separated_by_edges_of = [eps](std::span<const Vec2> p, std::span<const Vec2> q) {
-    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-      Vec2 e = p[(i + 1) % n] - p[i];
-      double len = norm(e);
-      if (len == 0) continue;
-      double deepest = -1e300;
-      for (Vec2 v : q)
-        deepest = std::fmax(deepest, cross(e, v - p[i]) / len);
-      if (deepest <= eps) return true;
-    }
-    return false;
-  };
-  return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
-}
-
 bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset) {
   for (std::size_t i = 0, n = polygon.size(); i < n; ++i) {
     Vec2 e = polygon[(i + 1) % n] - polygon[i];

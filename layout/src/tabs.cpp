@@ -2,18 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 namespace foldkit::layout {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Clockwise angle from direction u to direction v, in (0, 2pi]: the free angle outside the piece
 // between an edge leaving a vertex (u) and the previous edge coming back to it (v).
 double clockwise_angle(Vec2 u, Vec2 v) {
   double a = std::atan2(cross(v, u), dot(u, v));
-  if (a <= 1e-12) a += 2 * kPi;
+  if (a <= 1e-12) a += 2 * std::numbers::pi;
   return a;
 }
 
@@ -121,7 +120,7 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
     // A tab along p->q (a stretch of the edge) whose slants are at most limit_p, limit_q.
     auto attempt = [&](Vec2 p, Vec2 q, double limit_p, double limit_q, double w) -> std::optional<Tab> {
       // Gentle slants first; steeper ones (still within the corner's share) when the edge is short.
-      for (double cap : {options.max_slant_rad, kPi / 3, 5 * kPi / 12}) {
+      for (double cap : {options.max_slant_rad, std::numbers::pi / 3, 5 * std::numbers::pi / 12}) {
         const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
         Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
         const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
@@ -147,7 +146,8 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
       for (double start : {1.0, 0.0, 0.5, 0.25, 0.75}) {
         const double t0 = start * (1 - part), t1 = t0 + part;
         const Vec2 p = e.a + (e.b - e.a) * t0, q = e.a + (e.b - e.a) * t1;
-        const double lp = t0 < 1e-9 ? free_a : kPi, lq = t1 > 1 - 1e-9 ? free_b : kPi;
+        const double lp = t0 < 1e-9 ? free_a : std::numbers::pi,
+                     lq = t1 > 1 - 1e-9 ? free_b : std::numbers::pi;
         for (double w : widths) {
           if (w * stretch <= best_area) break;
           if (auto tab = attempt(p, q, lp, lq,

@@ -3,27 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include "foldkit/unfold/disjoint_sets.hpp"
+
 namespace foldkit::unfold {
-namespace {
-
-struct DisjointSets {
-  std::vector<int> parent;
-  explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool join(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    parent[a] = b;
-    return true;
-  }
-};
-
-}  // namespace
 
 std::vector<double> min_perimeter_weights(const Mesh& mesh) {
   const int ne = mesh.num_edges();

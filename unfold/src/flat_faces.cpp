@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <numbers>
 #include <numeric>
+
+#include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::unfold {
 namespace {
@@ -82,7 +85,7 @@ bool within(const Mesh& mesh, const std::vector<int>& faces, Vec3 normal, double
 
 FlatFaces find_flat_faces(const Mesh& mesh, double flat_angle_rad) {
   const int nf = mesh.num_faces();
-  const double cos_tol = std::cos(std::clamp(flat_angle_rad, 0.0, 3.14159265358979323846 / 2));
+  const double cos_tol = std::cos(std::clamp(flat_angle_rad, 0.0, std::numbers::pi / 2));
   FlatFaces out;
 
   // Step 1: the planar polygons of the file, each a tree of its triangles.
@@ -160,18 +163,9 @@ void keep_flat_faces(const Mesh& mesh, const FlatFaces& flat, EdgeConstraints& c
   user_fold.resize(ne, 0);
   constraints.force_cut.resize(ne, 0);
   constraints.force_fold.assign(ne, 0);
-  std::vector<int> parent(mesh.num_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  DisjointSets folded(mesh.num_faces());
   auto fold = [&](std::size_t e) {
-    const int a = find(mesh.edges[e].face[0]), b = find(mesh.edges[e].face[1]);
-    if (a == b) return;
-    parent[a] = b;
-    constraints.force_fold[e] = 1;
+    if (folded.join(mesh.edges[e].face[0], mesh.edges[e].face[1])) constraints.force_fold[e] = 1;
   };
   for (std::size_t e = 0; e < ne; ++e)
     if (flat.inside[e] && !constraints.force_cut[e]) fold(e);

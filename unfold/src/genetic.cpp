@@ -13,8 +13,10 @@
 #include <thread>
 
 #include "foldkit/unfold/decompose.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 #include "foldkit/unfold/rearrange.hpp"
 #include "foldkit/unfold/search.hpp"
+#include "parallel.hpp"
 
 namespace foldkit::unfold {
 
@@ -216,19 +218,12 @@ class GaRun {
 
 // The fewest pieces any unfolding can have: connected components once forced cuts are removed.
 int fewest_pieces(const Mesh& m, const EdgeConstraints& constraints) {
-  std::vector<int> uf(m.num_faces());
-  std::iota(uf.begin(), uf.end(), 0);
-  auto find = [&uf](int x) {
-    while (uf[x] != x)
-      x = uf[x] = uf[uf[x]];
-    return x;
-  };
+  DisjointSets joined(m.num_faces());
   int n = m.num_faces();
   for (int e = 0; e < m.num_edges(); ++e) {
     const auto& me = m.edges[e];
     if (me.boundary() || constraints.cut(e)) continue;
-    int a = find(me.face[0]), b = find(me.face[1]);
-    if (a != b) uf[a] = b, --n;
+    if (joined.join(me.face[0], me.face[1])) --n;
   }
   return n;
 }
@@ -254,19 +249,7 @@ GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const Pr
   // which one reaches one piece per component. Each run has its own generator seeded from (seed, run
   // index), so neither the thread count nor the timing of threads changes what a round produces.
   std::vector<std::unique_ptr<GaRun>> run(runs);
-  auto parallel = [&](auto&& job) {
-    std::atomic<int> next{0};
-    auto worker = [&] {
-      for (int r; (r = next.fetch_add(1)) < runs;)
-        job(r);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-      pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool)
-      t.join();
-  };
+  auto parallel = [&](const auto& job) { run_parallel(runs, threads, job); };
   parallel([&](int r) {
     run[r] = std::make_unique<GaRun>(ctx, opt, opt.shares[r],
                                      opt.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1,

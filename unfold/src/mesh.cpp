@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "foldkit/error.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::unfold {
 namespace {
@@ -15,14 +16,6 @@ namespace {
 std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
 }
 
 // 1-based numbers in messages, as in the OBJ/OFF files users look at.
@@ -85,9 +78,7 @@ Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces
   }
 
   // Corner c = 3f+i. Corners of one vertex in faces adjacent across an edge through it form one fan.
-  std::vector<int> parent(static_cast<std::size_t>(nf) * 3);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto unite = [&](int x, int y) { parent[find_root(parent, x)] = find_root(parent, y); };
+  DisjointSets fans(3 * nf);
   for (const MeshEdge& e : mesh.edges) {
     if (e.boundary()) continue;
     for (int k = 0; k < 2; ++k) {
@@ -98,13 +89,13 @@ Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces
         const int i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
         c[s] = 3 * e.face[s] + i;
       }
-      unite(c[0], c[1]);
+      fans.join(c[0], c[1]);
     }
   }
   std::vector<int> fan_of_vertex(nv, -1);
   for (int c = 0; c < 3 * nf; ++c) {
     const int v = mesh.faces[c / 3][c % 3];
-    const int r = find_root(parent, c);
+    const int r = fans.find(c);
     if (fan_of_vertex[v] < 0) {
       fan_of_vertex[v] = r;
     } else if (fan_of_vertex[v] != r) {

@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "foldkit/error.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 #include "mesh_io_soup.hpp"
 
 namespace foldkit::unfold::detail {
@@ -22,14 +23,6 @@ using Tri = std::array<int, 3>;
 std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
 }
 
 std::string plural(std::size_t n, const std::string& word) {
@@ -414,23 +407,22 @@ std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, 
 std::size_t split_pinched_vertices(std::vector<Vec3>& points, std::vector<int>& file_index,
                                    std::vector<Tri>& tris) {
   const int nf = static_cast<int>(tris.size());
-  std::vector<int> parent(static_cast<std::size_t>(nf) * 3);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets fans(3 * nf);
   const EdgeFaces map = edge_faces(tris);
   for (const auto& [key, uses] : map) {
     if (uses.size() != 2) continue;
     const auto [f, i] = uses[0];
     const auto [g, j] = uses[1];
     // f traverses a->b, g traverses b->a: corner i of f joins corner j+1 of g, and the other end too.
-    parent[find_root(parent, 3 * f + i)] = find_root(parent, 3 * g + (j + 1) % 3);
-    parent[find_root(parent, 3 * f + (i + 1) % 3)] = find_root(parent, 3 * g + j);
+    fans.join(3 * f + i, 3 * g + (j + 1) % 3);
+    fans.join(3 * f + (i + 1) % 3, 3 * g + j);
   }
   std::vector<int> first_root(points.size(), -1);
   std::map<int, int> copy_of_root;
   std::vector<char> split(points.size(), 0);
   for (int c = 0; c < 3 * nf; ++c) {
     int& v = tris[c / 3][c % 3];
-    const int r = find_root(parent, c);
+    const int r = fans.find(c);
     if (first_root[v] < 0) first_root[v] = r;
     if (first_root[v] == r) continue;
     auto [it, inserted] = copy_of_root.try_emplace(r, static_cast<int>(points.size()));
@@ -623,18 +615,17 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
 
   // Closed components are turned so their signed volume is positive (normals outward).
   const int nf = static_cast<int>(tris.size());
-  std::vector<int> parent(nf);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets components_of(nf);
   map = edge_faces(tris);
   std::unordered_map<int, bool> closed;
   for (const auto& [key, uses] : map)
-    if (uses.size() == 2) parent[find_root(parent, uses[0].first)] = find_root(parent, uses[1].first);
+    if (uses.size() == 2) components_of.join(uses[0].first, uses[1].first);
   for (const auto& [key, uses] : map)
-    if (uses.size() == 1) closed[find_root(parent, uses[0].first)] = false;
+    if (uses.size() == 1) closed[components_of.find(uses[0].first)] = false;
   std::unordered_map<int, double> volume;
   for (int f = 0; f < nf; ++f) {
     const Vec3 a = used[tris[f][0]], b = used[tris[f][1]], c = used[tris[f][2]];
-    volume[find_root(parent, f)] += dot(a, cross(b, c));
+    volume[components_of.find(f)] += dot(a, cross(b, c));
   }
   // One pass over the faces for all components: a pass per inward component was quadratic (50,000
   // inverted tetrahedra took 81 s).
@@ -648,7 +639,7 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
   }
   if (turned > 0)
     for (int f = 0; f < nf; ++f)
-      if (inward.count(find_root(parent, f))) {
+      if (inward.count(components_of.find(f))) {
         std::swap(tris[f][1], tris[f][2]);
         origin.flip(f);
       }

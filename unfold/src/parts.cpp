@@ -9,6 +9,7 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/geom/hull.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::unfold {
 namespace {
@@ -97,13 +98,8 @@ int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter&
   }
   for (auto& h : hull)
     h.points = convex_hull(std::move(h.points));
-  std::vector<int> owner(parts);
-  std::iota(owner.begin(), owner.end(), 0);
-  auto find = [&](int p) {
-    while (owner[p] != p)
-      p = owner[p] = owner[owner[p]];
-    return p;
-  };
+  DisjointSets owner(parts);
+  auto find = [&owner](int p) { return owner.find(p); };
   for (bool merged = true; merged;) {
     merged = false;
     std::vector<std::vector<int>> next(parts);
@@ -127,7 +123,7 @@ int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter&
       for (int q : around) {
         Hull both = hull[q];
         if (!fitter.grow(both, hull[p].points)) continue;
-        owner[p] = q;
+        owner.join(p, q);
         hull[q] = std::move(both);
         size[q] += size[p];
         for (int r : next[p])
@@ -228,19 +224,13 @@ void check_flat_faces_fit(const Unfolding& u, const Units& units, const Fitter& 
 }  // namespace
 
 std::vector<int> flat_face_of(const Unfolding& u) {
-  std::vector<int> parent(u.num_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  DisjointSets flat_faces(u.num_faces());
   for (const UnfoldEdge& e : u.edges)
-    if (e.inside_face && !e.cut && !e.boundary()) parent[find(e.face[0])] = find(e.face[1]);
+    if (e.inside_face && !e.cut && !e.boundary()) flat_faces.join(e.face[0], e.face[1]);
   std::vector<int> id(u.num_faces(), -1), out(u.num_faces());
   int n = 0;
   for (int f = 0; f < u.num_faces(); ++f) {
-    const int r = find(f);
+    const int r = flat_faces.find(f);
     if (id[r] < 0) id[r] = n++;
     out[f] = id[r];
   }

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "foldkit/error.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::unfold {
 namespace {
@@ -121,13 +122,7 @@ EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams) {
   result.force_fold.assign(mesh.edges.size(), 0);
   for (const auto& v : seams.force_cut)
     result.force_cut[lookup(v, "--cut")] = 1;
-  std::vector<int> parent(mesh.num_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  DisjointSets kept(mesh.num_faces());
   for (const auto& v : seams.forbid_cut) {
     int e = lookup(v, "--keep");
     if (result.force_cut[e])
@@ -136,11 +131,9 @@ EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams) {
       throw Error("--keep: " + edge_name(v) + " lies on the mesh boundary and cannot be folded",
                   ExitCode::Usage);
     if (result.force_fold[e]) continue;
-    int a = find(mesh.edges[e].face[0]), b = find(mesh.edges[e].face[1]);
-    if (a == b)
+    if (!kept.join(mesh.edges[e].face[0], mesh.edges[e].face[1]))
       throw Error("--keep: edge " + edge_name(v) + " closes a loop of kept edges, which cannot lie flat",
                   ExitCode::Usage);
-    parent[a] = b;
     result.force_fold[e] = 1;
   }
   return result;

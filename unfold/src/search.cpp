@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "foldkit/unfold/mst.hpp"
+#include "parallel.hpp"
 
 namespace foldkit::unfold {
 
@@ -266,19 +267,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
     return false;
   };
   // Runs job(k) for every walker k on `threads` threads (the calling one included).
-  auto for_each_walker = [&](const auto& job) {
-    std::atomic<int> next{0};
-    auto worker = [&] {
-      for (int k; (k = next.fetch_add(1)) < walkers_n;)
-        job(k);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-      pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool)
-      t.join();
-  };
+  auto for_each_walker = [&](const auto& job) { run_parallel(walkers_n, threads, job); };
   // Walk 0 first runs alone for one full round, on the calling thread: most meshes of up to ~1,000
   // faces are solved within it, before any other walk is built or any thread started.
   walkers[0] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed);

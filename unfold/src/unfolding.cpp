@@ -6,6 +6,7 @@
 #include <queue>
 #include <sstream>
 
+#include "foldkit/unfold/disjoint_sets.hpp"
 #include "foldkit/unfold/overlap.hpp"
 
 namespace foldkit::unfold {
@@ -17,12 +18,6 @@ Vec2 apex_in_edge_frame(Vec3 p, Vec3 q, Vec3 r) {
   Vec3 u = normalized(q - p);
   Vec3 pr = r - p;
   return {dot(pr, u), norm(cross(u, pr))};
-}
-
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x)
-    x = parent[x] = parent[parent[x]];
-  return x;
 }
 
 }  // namespace
@@ -135,8 +130,7 @@ std::vector<std::string> check_unfolding(const Mesh& mesh, const Unfolding& u, d
       report("face " + std::to_string(f) + " is mirrored or degenerate in the plane");
   }
   // Fold edges: both copies coincide and join faces of one piece; folds form a forest per piece.
-  std::vector<int> uf(nf);
-  std::iota(uf.begin(), uf.end(), 0);
+  DisjointSets folded(nf);
   std::vector<int> folds_in_piece(u.piece_count, 0), faces_in_piece(u.piece_count, 0);
   for (int f = 0; f < nf; ++f)
     if (u.piece_of_face[f] >= 0 && u.piece_of_face[f] < u.piece_count) ++faces_in_piece[u.piece_of_face[f]];
@@ -160,9 +154,7 @@ std::vector<std::string> check_unfolding(const Mesh& mesh, const Unfolding& u, d
     Vec2 ga = u.flat[g][(j + 1) % 3], gb = u.flat[g][j];
     if (norm(fa - ga) > tol || norm(fb - gb) > tol)
       report("the two sides of fold edge " + std::to_string(e) + " do not coincide");
-    int rf = find_root(uf, f), rg = find_root(uf, g);
-    if (rf == rg) report("fold edge " + std::to_string(e) + " closes a cycle of folds");
-    uf[rf] = rg;
+    if (!folded.join(f, g)) report("fold edge " + std::to_string(e) + " closes a cycle of folds");
     ++folds_in_piece[u.piece_of_face[f]];
   }
   for (int p = 0; p < u.piece_count; ++p)

@@ -2,6 +2,7 @@
 // Fold lines: one per fold edge of a piece, mountain or valley by the sign of the dihedral angle,
 // near-flat folds left out, both ends pulled back from the vertices so that a scoring blade does not
 // run into the outline and tear the corner.
+#include <numbers>
 #include <vector>
 
 #include "foldkit/layout/outline.hpp"
@@ -11,7 +12,7 @@ namespace foldkit::layout {
 
 struct FoldOptions {
   /// Folds with |angle| below this are flat and not drawn.
-  double flat_fold_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  double flat_fold_rad = 0.5 * std::numbers::pi / 180.0;
   /// Each end stops this far short of its vertex (never more than a quarter of the fold's length).
   double inset_mm = 0.6;
 };

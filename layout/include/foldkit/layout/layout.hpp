@@ -3,6 +3,7 @@
 // matching edge numbers, optional direction arrows and assembly hints, packs everything onto sheets
 // and adds registration marks. Built from the small modules beside this header.
 #include <chrono>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +28,7 @@ struct LayoutOptions {
   Vec2 paper_mm{210, 297};  ///< A4 portrait by default (already turned to the wanted orientation)
   double margin_mm = 10;
   /// Folds whose |angle| is below this (radians) are not drawn.
-  double flat_fold_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  double flat_fold_rad = 0.5 * std::numbers::pi / 180.0;
   /// Fold lines stop this far short of their vertices.
   double fold_inset_mm = 0.6;
 

@@ -31,9 +31,8 @@ struct Rigid2 {
   Vec2 apply_dir(Vec2 d) const { return rotated(d, angle_rad); }
 };
 
-/// True when the interiors of two convex counter-clockwise polygons overlap by more than `eps` (a
-/// length): separating axes over both polygons' edge normals. Touching is not overlapping.
-bool convex_overlap(std::span<const Vec2> a, std::span<const Vec2> b, double eps);
+/// The convex overlap test is foldkit::convex_overlap (geom/predicates.hpp), shared with the unfolding.
+using foldkit::convex_overlap;
 
 /// True when p lies inside the convex counter-clockwise polygon at least `inset` from every edge.
 bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset);

@@ -5,6 +5,7 @@
 // piece or one of the piece's tabs is narrowed, then moved to the partner edge, and dropped only when
 // neither side has room even at the minimum width. Other pieces are kept apart by packing, which
 // treats a piece and its tabs as one shape.
+#include <numbers>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,7 +19,7 @@ namespace foldkit::layout {
 struct TabOptions {
   double width_mm = 5;      ///< full width, from the edge to the tab's outer side
   double min_width_mm = 2;  ///< narrower tabs are not worth gluing: try the other side or drop
-  double max_slant_rad = 0.25 * 3.14159265358979323846;  ///< angle between edge and slanted end at most
+  double max_slant_rad = 0.25 * std::numbers::pi;  ///< angle between edge and slanted end at most
   /// Tabs are at most this fraction of their edge's length wide, so short edges get narrow tabs.
   double width_per_length = 0.45;
 };

@@ -3,6 +3,7 @@
 // (parts that fit the sheet) and the layout (scale, packing) ask of a shape.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <span>
 #include <utility>
 #include <vector>
@@ -65,7 +66,6 @@ struct RectFit {
 /// Best fit of the points into a `room` rectangle (same unit as the points times the scale), over
 /// rotations every half degree and at every hull edge (0 when the room is empty).
 inline RectFit fit_in_rect(std::span<const Vec2> points, Vec2 room) {
-  constexpr double kPi = 3.14159265358979323846;
   if (!(room.x > 0 && room.y > 0)) return {};
   const std::vector<Vec2> hull = convex_hull(std::vector<Vec2>(points.begin(), points.end()));
   RectFit best;
@@ -78,12 +78,12 @@ inline RectFit fit_in_rect(std::span<const Vec2> points, Vec2 room) {
     if (s > best.scale) best = {s, a};
   };
   for (int k = 0; k < 360; ++k)
-    consider(kPi * k / 360);
+    consider(std::numbers::pi * k / 360);
   for (std::size_t i = 0; i < hull.size(); ++i) {
     const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
     const double a = -std::atan2(e.y, e.x);
     consider(a);
-    consider(a + kPi / 2);
+    consider(a + std::numbers::pi / 2);
   }
   return best;
 }

@@ -6,6 +6,9 @@
 // touch along a shared edge or vertex are never reported as overlapping, while a real crossing
 // deeper than eps always is.
 #include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
 
 #include "foldkit/geom/vec.hpp"
 
@@ -30,15 +33,17 @@ inline Box2 bounds(const Triangle2& t) {
   return b;
 }
 
-/// True when the interiors of two counter-clockwise triangles overlap by more than `eps` (a length):
-/// separating-axis test over the six edge normals, each shrunk by eps. Shared edges, shared vertices
-/// and mere touching are not overlaps.
-inline bool triangles_overlap(const Triangle2& a, const Triangle2& b, double eps) {
+/// True when the interiors of two counter-clockwise convex polygons (any sized ranges of Vec2: a
+/// Triangle2, a Polygon, a span) overlap by more than `eps` (a length): separating-axis test over the
+/// edge normals of both, each shrunk by eps. Shared edges, shared vertices and mere touching are not
+/// overlaps; a negative eps asks for a clearance of -eps between them.
+template <class P, class Q>
+bool convex_overlap(const P& a, const Q& b, double eps) {
   // q is separated from p when, for some edge of p, every corner of q lies outside that edge's line or
   // within eps inside it. cross(e, v - p_i) / |e| is the signed distance of v to the inside of the edge.
-  auto separated_by_edges_of = [eps](const Triangle2& p, const Triangle2& q) {
-    for (int i = 0; i < 3; ++i) {
-      Vec2 e = p[(i + 1) % 3] - p[i];
+  auto separated_by_edges_of = [eps](const auto& p, const auto& q) {
+    for (std::size_t i = 0, n = std::size(p); i < n; ++i) {
+      Vec2 e = p[(i + 1) % n] - p[i];
       double len = norm(e);
       if (len == 0) continue;
       double deepest = -1e300;
@@ -49,6 +54,11 @@ inline bool triangles_overlap(const Triangle2& a, const Triangle2& b, double eps
     return false;
   };
   return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
+}
+
+/// convex_overlap of two triangles (the unfolding's overlap test).
+inline bool triangles_overlap(const Triangle2& a, const Triangle2& b, double eps) {
+  return convex_overlap(a, b, eps);
 }
 
 /// True when segments pq and rs cross at a point interior to both (proper crossing, beyond eps).

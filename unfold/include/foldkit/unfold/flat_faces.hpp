@@ -2,6 +2,7 @@
 // Flat faces: the units no stage may cut. A planar polygon of the input file (a quad, an n-gon, convex or
 // not) and any run of coplanar triangles prints as one polygon, so its triangles are folded together,
 // always. A polygon that is not planar within the tolerance cannot lie flat: its triangles fold.
+#include <numbers>
 #include <vector>
 
 #include "foldkit/unfold/dual_graph.hpp"
@@ -12,7 +13,7 @@ namespace foldkit::unfold {
 
 /// Half a degree: below what a folded paper model shows, above the rounding of coordinates printed with
 /// six significant digits.
-constexpr double kDefaultFlatAngleRad = 0.5 * 3.14159265358979323846 / 180.0;
+constexpr double kDefaultFlatAngleRad = 0.5 * std::numbers::pi / 180.0;
 
 /// The partition of a mesh's triangles into flat faces.
 struct FlatFaces {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/unfold/flat_faces.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/slits.hpp"
 #include "foldkit/unfold/unfolding.hpp"
@@ -37,7 +38,7 @@ struct UnfoldOptions {
   SeamConstraints seams;
   /// Triangles of a planar input polygon, and coplanar neighbours, within this angle of one normal are one
   /// flat face that is never cut (see flat_faces.hpp).
-  double flat_angle_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  double flat_angle_rad = kDefaultFlatAngleRad;
   /// After the search or the GA, move cuts away from leaves at nearly flat vertices (slits.hpp), where
   /// no glue tab fits.
   bool close_slits = true;
