@@ -38,15 +38,21 @@ std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
   return out;
 }
 
-// Marks every cell whose centre lies inside the shape grown by `grow`: with grow = spacing/2 plus half
-// a cell diagonal (plus the arc tolerance), that is every cell the shape grown by spacing/2 touches.
+// The shape grown by `grow` plus the arc tolerance, in the item's frame. Growing commutes with
+// rotation, so one offset serves every rotation (it was most of the packing time on large parts).
+std::vector<Polygon> grow_shape(std::span<const Polygon> shape, double grow) {
+  constexpr double kArcTolerance = 0.02;
+  return polygon_offset(shape, grow + kArcTolerance, kArcTolerance);
+}
+
+// Marks every cell whose centre lies inside the grown shape turned by `angle`: with grow = spacing/2
+// plus half a cell diagonal, that is every cell the shape grown by spacing/2 touches.
 // A shape larger than the grid (nx x ny cells) gets no cells and a size that fits nowhere: its cell
 // count would overflow an int, and its rows would be gigabytes, long before it could be placed.
-Raster rasterize(std::span<const Polygon> shape, double angle, double grow, double cell, int nx, int ny) {
+Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell, int nx, int ny) {
   Raster r;
   r.angle_rad = angle;
-  constexpr double kArcTolerance = 0.02;
-  std::vector<Polygon> grown = polygon_offset(rotate_all(shape, angle), grow + kArcTolerance, kArcTolerance);
+  const std::vector<Polygon> grown = rotate_all(grown_shape, angle);
   Box2 box;
   for (const Polygon& p : grown)
     box.add(bounds_of(p));
@@ -60,15 +66,25 @@ Raster rasterize(std::span<const Polygon> shape, double angle, double grow, doub
   r.width = static_cast<int>(std::ceil(box.width() / cell)) + 1;
   r.height = static_cast<int>(std::ceil(box.height() / cell)) + 1;
   r.runs.resize(r.height);
-  std::vector<double> xs;
-  for (int j = 0; j < r.height; ++j) {
-    const double y = r.origin.y + cell * (j + 0.5);
-    xs.clear();
-    for (const Polygon& p : grown)
-      for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-        Vec2 a = p[i], b = p[(i + 1) % n];
-        if ((a.y <= y) != (b.y <= y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+  // Each edge adds its crossings to the rows whose centre line it spans: one pass over the edges
+  // instead of one per row.
+  std::vector<std::vector<double>> crossings(r.height);
+  for (const Polygon& p : grown)
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      const Vec2 a = p[i], b = p[(i + 1) % n];
+      if (a.y == b.y) continue;
+      const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+      // The rows whose centre line may lie in [lo, hi), one more each side against rounding; the
+      // exact test below decides.
+      const int j0 = std::max(0, static_cast<int>(std::floor((lo - r.origin.y) / cell - 0.5)));
+      const int j1 = std::min(r.height - 1, static_cast<int>(std::floor((hi - r.origin.y) / cell - 0.5)) + 1);
+      for (int j = j0; j <= j1; ++j) {
+        const double y = r.origin.y + cell * (j + 0.5);
+        if ((a.y <= y) != (b.y <= y)) crossings[j].push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
       }
+    }
+  for (int j = 0; j < r.height; ++j) {
+    std::vector<double>& xs = crossings[j];
     std::sort(xs.begin(), xs.end());
     // Clipper's offset output is a set of disjoint outer loops and holes: even-odd filling is exact.
     for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
@@ -233,6 +249,7 @@ std::vector<double> candidate_angles(const PackItem& item, int rotations) {
 }  // namespace
 
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
+  if (options.engine == PackEngine::Nest2d) return pack_items_nest2d(items, options);
   const double cell = options.cell_mm;
   const double half_gap = 0.5 * options.spacing_mm;
   // The grid reaches half a gap beyond the area: an item's grown shape may use it, the item may not.
@@ -264,8 +281,9 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   std::vector<std::vector<Raster>> rasters(items.size());
   std::vector<double> area(items.size()), longest(items.size()), girth(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::vector<Polygon> grown = grow_shape(items[i].shape_mm, grow);
     for (double angle : candidate_angles(items[i], options.rotations))
-      rasters[i].push_back(rasterize(items[i].shape_mm, angle, grow, cell, nx, ny));
+      rasters[i].push_back(rasterize(grown, angle, cell, nx, ny));
     area[i] = std::fabs(total_area(items[i].shape_mm));
     Box2 box;
     for (const Polygon& p : items[i].shape_mm)
