@@ -1,5 +1,6 @@
 // `foldkit cut MESH --device cameo4 --media cardstock-220`: load -> unfold -> lay out -> plan -> encode ->
 // send, to a USB cutter, a file or device node (-o), or the simulated device (--dry-run, or no --device).
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/hpgl.hpp"
 #include "foldkit/devices/plan.hpp"
+#include "foldkit/devices/print_cut_preview.hpp"
 #include "foldkit/devices/printed_marks.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/devices/send.hpp"
@@ -40,7 +42,7 @@ struct CutArgs {
   std::string mesh;
   std::string device, media = "cardstock-220", mat;
   bool dry_run = false;
-  std::string output, preview;
+  std::string output, preview, overlay;
   std::vector<std::string> profiles;
   std::string usb_vid, usb_pid;
   bool labels = false;
@@ -113,6 +115,9 @@ void setup_cut(CLI::App& app) {
   cmd->add_option("--preview", args->preview,
                   "Rendering of what the simulated device cut, scored and drew (.png or .svg); default "
                   "<mesh>-cut.png with --dry-run");
+  cmd->add_option("--overlay", args->overlay,
+                  "With --dry-run: the sheet as `make` prints it (.png) with what the simulated device cut "
+                  "drawn over it in red, so a cut that misses its print shows (one file per sheet)");
   add_profile_options(*cmd, args->profiles);
   cmd->add_option("--usb-vid", args->usb_vid, "USB vendor id (hex) overriding the profile's");
   cmd->add_option("--usb-pid", args->usb_pid, "USB product id (hex) overriding the profile's");
@@ -155,6 +160,11 @@ void setup_cut(CLI::App& app) {
     if (!args->preview.empty() && !simulated)
       throw Error("--preview is the simulated device's rendering: add --dry-run (and drop -o)",
                   ExitCode::Usage);
+    if (!args->overlay.empty() && !simulated)
+      throw Error("--overlay draws the simulated device's cut over the print: add --dry-run (and drop -o)",
+                  ExitCode::Usage);
+    if (!args->overlay.empty() && lower_ext(args->overlay) != ".png")
+      throw Error("--overlay " + args->overlay + ": the overlay is a .png", ExitCode::Usage);
     const bool to_stdout = args->output == "-" || args->preview == "-";
     if (to_stdout && args->json)
       throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
@@ -162,6 +172,7 @@ void setup_cut(CLI::App& app) {
     inputs.insert(inputs.end(), args->profiles.begin(), args->profiles.end());
     refuse_output_over_inputs("-o", args->output, inputs);
     refuse_output_over_inputs("--preview", args->preview, inputs);
+    refuse_output_over_inputs("--overlay", args->overlay, inputs);
     // A typical two-holder cutter stands in when no device is named.
     const std::string device_id = args->device.empty() ? "cameo4" : args->device;
     devices::DeviceProfile device = profiles.device(device_id);
@@ -238,7 +249,13 @@ void setup_cut(CLI::App& app) {
     for (std::size_t i = 1; i < sheets.size(); ++i) {
       refuse_output_over_inputs("-o", sheet_output_path(args->output, i), inputs);
       refuse_output_over_inputs("--preview", sheet_output_path(preview, i), inputs);
+      refuse_output_over_inputs("--overlay", sheet_output_path(args->overlay, i), inputs);
     }
+    // The overlay prints the sheet as `make` does with the same colour options.
+    devices::RenderOptions print;
+    apply_colour_render_options(
+        args->colour,
+        std::any_of(sheets.begin(), sheets.end(), [](const Sheet& s) { return !s.fills.empty(); }), print);
     auto wait_for_sheet = [&](std::size_t i) {
       if (i == 0 && (args->sheet != 0 || sheets.size() == 1)) return;
       line.clear();
@@ -365,6 +382,9 @@ void setup_cut(CLI::App& app) {
         rep.simulated_cut_mm = sim->down_length_mm();
         rep.simulated_travel_mm = sim->travel_mm();
         if (!preview.empty()) sim->render(sheet_output_path(preview, i));
+        if (!args->overlay.empty())
+          devices::render_print_and_cut(sheets[i], devices::simulated_cuts_mm(*sim, device, args->mat),
+                                        sheet_output_path(args->overlay, i), print);
       }
       reports.push_back(std::move(rep));
     }
@@ -408,6 +428,9 @@ void setup_cut(CLI::App& app) {
     }
     if (simulated && !preview.empty())
       std::fprintf(report, "rendering of the simulated cut: %s%s\n", preview.c_str(),
+                   reports.size() > 1 ? " (one per sheet)" : "");
+    if (!args->overlay.empty())
+      std::fprintf(report, "the simulated cut over the print: %s%s\n", args->overlay.c_str(),
                    reports.size() > 1 ? " (one per sheet)" : "");
   });
 }

@@ -23,12 +23,7 @@ using foldkit::devices::write_file_atomically;
 
 namespace {
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 int count_entries(const fs::path& dir) {
   int n = 0;
@@ -49,7 +44,7 @@ TEST(AtomicFile, CommitPutsTheContentsUnderTheTargetName) {
     EXPECT_EQ(file.temp_path().parent_path(), dir) << "the temporary must be in the same directory";
     file.commit();
   }
-  EXPECT_EQ(read_all(target), "IN;PU0,0;");
+  EXPECT_EQ(slurp(target), "IN;PU0,0;");
   EXPECT_EQ(count_entries(dir), 1) << "the temporary file is gone after rename";
 }
 
@@ -61,7 +56,7 @@ TEST(AtomicFile, AnUncommittedFileLeavesTheOldTargetUntouchedAndNoTemporary) {
     AtomicFile file(target);
     file.stream() << "half of the new conte";
   }
-  EXPECT_EQ(read_all(target), "old");
+  EXPECT_EQ(slurp(target), "old");
   EXPECT_EQ(count_entries(dir), 1);
 }
 
@@ -124,7 +119,7 @@ TEST(AtomicFile, AMovedFileIsCommittedByItsNewOwnerOnly) {
   first.stream() << "moved";
   AtomicFile second(std::move(first));
   second.commit();
-  EXPECT_EQ(read_all(target), "moved");
+  EXPECT_EQ(slurp(target), "moved");
 }
 
 TEST(AtomicFile, AFileInTheCurrentDirectoryNeedsNoDirectoryPart) {
@@ -133,7 +128,7 @@ TEST(AtomicFile, AFileInTheCurrentDirectoryNeedsNoDirectoryPart) {
   fs::current_path(dir);
   write_file_atomically("plain.txt", std::string_view("here"));
   fs::current_path(old_cwd);
-  EXPECT_EQ(read_all(dir / "plain.txt"), "here");
+  EXPECT_EQ(slurp(dir / "plain.txt"), "here");
 }
 
 TEST(AtomicFile, ASymbolicLinkIsWrittenThroughAndStaysALink) {
@@ -143,7 +138,7 @@ TEST(AtomicFile, ASymbolicLinkIsWrittenThroughAndStaysALink) {
   fs::create_symlink("real/model.svg", dir / "link.svg");
   write_file_atomically(dir / "link.svg", std::string_view("new"));
   EXPECT_TRUE(fs::is_symlink(dir / "link.svg"));
-  EXPECT_EQ(read_all(dir / "real" / "model.svg"), "new");
+  EXPECT_EQ(slurp(dir / "real" / "model.svg"), "new");
   EXPECT_EQ(count_entries(dir / "real"), 1) << "the temporary lived beside the file the link names";
   EXPECT_EQ(count_entries(dir), 2);
 }
@@ -153,7 +148,7 @@ TEST(AtomicFile, ADanglingLinkCreatesTheFileItNames) {
   fs::create_symlink("net.obj", dir / "link.obj");
   write_file_atomically(dir / "link.obj", std::string_view("v 0 0 0"));
   EXPECT_TRUE(fs::is_symlink(dir / "link.obj"));
-  EXPECT_EQ(read_all(dir / "net.obj"), "v 0 0 0");
+  EXPECT_EQ(slurp(dir / "net.obj"), "v 0 0 0");
 }
 
 TEST(AtomicFile, AFifoIsWrittenIntoAndNeverReplaced) {
@@ -161,7 +156,7 @@ TEST(AtomicFile, AFifoIsWrittenIntoAndNeverReplaced) {
   const fs::path fifo = dir / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   std::string received;
-  std::thread reader([&] { received = read_all(fifo); });
+  std::thread reader([&] { received = slurp(fifo); });
   write_file_atomically(fifo, std::string_view("PU0,0;"));
   reader.join();
   EXPECT_EQ(received, "PU0,0;");
@@ -203,8 +198,8 @@ TEST(AtomicFileSet, AllFilesAppearTogether) {
   EXPECT_EQ(count_entries(dir), 2) << "two temporaries, no target yet";
   EXPECT_FALSE(fs::exists(dir / "m.svg"));
   set.commit();
-  EXPECT_EQ(read_all(dir / "m.svg"), "one");
-  EXPECT_EQ(read_all(dir / "m-2.svg"), "two");
+  EXPECT_EQ(slurp(dir / "m.svg"), "one");
+  EXPECT_EQ(slurp(dir / "m-2.svg"), "two");
   EXPECT_EQ(count_entries(dir), 2);
 }
 
@@ -220,7 +215,7 @@ TEST(AtomicFileSet, AFailedRenamePutsTheFilesAlreadyReplacedBack) {
     fs::create_directories(dir / "m-2.svg" / "x");
     EXPECT_THROW(set.commit(), OutputError);
   }
-  EXPECT_EQ(read_all(dir / "m.svg"), "old one") << "sheet 1 has its old contents back";
+  EXPECT_EQ(slurp(dir / "m.svg"), "old one") << "sheet 1 has its old contents back";
   EXPECT_FALSE(fs::exists(dir / "m-3.svg"));
   EXPECT_EQ(count_entries(dir), 2) << "no temporary or backup left: only m.svg and the directory";
 }

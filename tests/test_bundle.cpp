@@ -24,12 +24,7 @@ using namespace foldkit;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 // The file names under the README's FILES heading.
 std::set<std::string> readme_files(const fs::path& readme) {

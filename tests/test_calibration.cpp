@@ -36,12 +36,7 @@ const ProfileSet& profiles() {
   return set;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 // Every M and D point of a GP-GL stream after the registration-mark search, in device units.
 std::vector<DevicePoint> geometry(const std::string& stream) {

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
 
 #include "test_paths.hpp"
 
@@ -22,10 +24,7 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using foldkit::test::slurp;
 
 // Runs foldkit in `dir` with arguments (each single-quoted), capturing stdout and stderr.
 CliRun run_foldkit(const fs::path& dir, const std::vector<std::string>& args) {
@@ -264,4 +263,89 @@ TEST(CliCut, TheRegistrationMarksPrintedAreTheOnesTheDeviceIsToldToFind) {
                         "job.gpgl", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(slurp(dir / "job.gpgl").find("TB51,600"), std::string::npos);
+}
+
+namespace {
+
+struct Rgb {
+  int w = 0, h = 0;
+  std::vector<unsigned char> px;
+  const unsigned char* at(int x, int y) const { return &px[(static_cast<std::size_t>(y) * w + x) * 3]; }
+};
+
+Rgb read_rgb(const fs::path& p) {
+  Rgb img;
+  int channels = 0;
+  unsigned char* data = stbi_load(p.string().c_str(), &img.w, &img.h, &channels, 3);
+  if (!data) return img;
+  img.px.assign(data, data + static_cast<std::size_t>(img.w) * img.h * 3);
+  stbi_image_free(data);
+  return img;
+}
+
+bool red(const unsigned char* p) {
+  return p[0] > 160 && p[1] < 90 && p[2] < 90;
+}
+
+bool dark(const unsigned char* p) {
+  return p[0] + p[1] + p[2] < 3 * 110;
+}
+
+// The share of `over`'s red (cut) pixels that lie within 2 px of a dark (printed line) pixel of
+// `print` moved by (dx, dy) pixels; counts the red pixels.
+double share_on_print(const Rgb& over, const Rgb& print, int dx, int dy, int& reds) {
+  constexpr int kReach = 2;
+  int near = 0;
+  reds = 0;
+  for (int y = kReach; y + kReach < over.h; ++y)
+    for (int x = kReach; x + kReach < over.w; ++x) {
+      if (!red(over.at(x, y))) continue;
+      ++reds;
+      bool found = false;
+      for (int v = -kReach; v <= kReach && !found; ++v)
+        for (int u = -kReach; u <= kReach && !found; ++u) {
+          const int px = x + u - dx, py = y + v - dy;
+          found = px >= 0 && py >= 0 && px < print.w && py < print.h && dark(print.at(px, py));
+        }
+      near += found;
+    }
+  return reds ? static_cast<double>(near) / reds : 0;
+}
+
+}  // namespace
+
+// Print-and-cut: `make --regmarks` prints the sheet, `cut --regmarks` with the same options cuts it; the
+// simulated device's cut, found through the printed marks and laid over the print, runs on the printed
+// cut lines (and would not, were the print 1 mm off).
+TEST(CliCut, TheOverlayShowsTheSimulatedCutOnTheLinesMakePrints) {
+  const auto dir = foldkit::test::temp_dir("cli-overlay");
+  const std::vector<std::string> same{"--size", "80mm", "--regmarks", "-q"};
+  std::vector<std::string> make{"make", mesh(), "--no-guide", "--dpi", "150", "-o", "print.png"};
+  make.insert(make.end(), same.begin(), same.end());
+  // Folds print dashed: only the blade's strokes, which follow solid lines, are compared.
+  std::vector<std::string> cut{"cut",       mesh(),     "--device",      "cameo4", "--dry-run",
+                               "--overlay", "over.png", "--fold-method", "none"};
+  cut.insert(cut.end(), same.begin(), same.end());
+  CliRun r = run_foldkit(dir, make);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_foldkit(dir, cut);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("the simulated cut over the print: over.png"), std::string::npos) << r.out;
+  const Rgb print = read_rgb(dir / "print.png"), over = read_rgb(dir / "over.png");
+  ASSERT_GT(print.w, 0);
+  ASSERT_EQ(over.w, print.w);
+  ASSERT_EQ(over.h, print.h);
+  int reds = 0;
+  EXPECT_GE(share_on_print(over, print, 0, 0, reds), 0.98);
+  EXPECT_GT(reds, 2000) << "the cut is drawn";
+  const int mm = static_cast<int>(150 / 25.4);
+  EXPECT_LT(share_on_print(over, print, mm, mm, reds), 0.8) << "the check sees a cut 1 mm off its print";
+
+  // Without the simulated device there is nothing to lay over the print.
+  r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "-o", "job.gpgl", "--overlay", "o.png"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("add --dry-run"), std::string::npos) << r.err;
+  r = run_foldkit(dir, {"cut", mesh(), "--dry-run", "--overlay", "o.svg"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "o.svg"));
 }

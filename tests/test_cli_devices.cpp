@@ -34,10 +34,7 @@ std::string quote(const std::string& s) {
   return q + "'";
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using foldkit::test::slurp;
 
 Outcome run(const std::vector<std::string>& argv, const std::string& env = "") {
   const fs::path dir = foldkit::test::temp_dir("cli_devices");

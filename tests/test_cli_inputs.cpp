@@ -22,10 +22,7 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using foldkit::test::slurp;
 
 // Runs foldkit with arguments (each single-quoted), capturing stdout and stderr into temp files.
 CliRun run_foldkit(const std::vector<std::string>& args) {

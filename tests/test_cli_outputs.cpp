@@ -23,12 +23,7 @@ using foldkit::test::run_foldkit;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;

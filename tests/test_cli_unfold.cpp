@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "foldkit/geom/predicates.hpp"
+#include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "test_paths.hpp"
 
@@ -107,8 +108,22 @@ TEST(CliUnfold, EveryTrickyMeshUnfolds) {
   auto shared = test::shared_meshes();
   if (!shared) GTEST_SKIP() << "../shared/meshes not present";
   for (const auto& entry : fs::directory_iterator(*shared / "tricky")) {
+    SCOPED_TRACE(entry.path().string());
     auto run = test::run_foldkit({"unfold", entry.path().string(), "--json", "--method", "mst"});
-    EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.err;
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    const unfold::Mesh mesh = unfold::load_mesh(entry.path()).mesh;
+    EXPECT_EQ(j["faces"].get<int>(), mesh.num_faces());
+    EXPECT_EQ(j["method"].get<std::string>(), "mst");
+    const int pieces = j["pieces"].get<int>();
+    EXPECT_GE(pieces, unfold::count_components(mesh));
+    // Each piece is a tree of faces joined by folds: faces - pieces folds, every other edge is cut, and
+    // every cut edge but the mesh boundary is a seam.
+    int boundary = 0;
+    for (const auto& e : mesh.edges)
+      boundary += e.boundary() ? 1 : 0;
+    EXPECT_EQ(j["cut_edges"].get<int>(), mesh.num_edges() - (mesh.num_faces() - pieces));
+    EXPECT_EQ(j["seams"].get<int>(), j["cut_edges"].get<int>() - boundary);
   }
 }
 

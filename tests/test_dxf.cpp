@@ -85,12 +85,7 @@ const devices::StrokeFont& font() {
   return f;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 // Debian's python3 (where python3-ezdxf lives) before whatever python3 the PATH finds first.
 std::string python() {

@@ -20,12 +20,7 @@
 namespace foldkit::devices {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 TEST(FileTransport, WritesARegularFileOnlyWhenClosed) {
   const auto path = test::temp_dir("ft") / "job.gpgl";

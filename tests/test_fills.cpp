@@ -277,14 +277,12 @@ TEST(Fills, SvgAndPdfEmbedTheFillsAsOneImagePerSheet) {
   const fs::path dir = test::temp_dir("fills_formats");
   devices::RenderOptions ro;
   const auto svg = devices::render_sheets(p.layout.sheets, dir / "cube.svg", ro);
-  std::ifstream in(svg.front());
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = test::slurp(svg.front());
   EXPECT_NE(text.find("<g id=\"fill\""), std::string::npos);
   EXPECT_NE(text.find("data:image/jpeg;base64,"), std::string::npos);
   EXPECT_NE(text.find("clip-path=\"url(#fills)\""), std::string::npos);
   const auto pdf = devices::render_sheets(p.layout.sheets, dir / "cube.pdf", ro);
-  std::ifstream pin(pdf.front(), std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(pin)), std::istreambuf_iterator<char>());
+  const std::string bytes = test::slurp(pdf.front());
   EXPECT_NE(bytes.find("/DCTDecode"), std::string::npos);
   fs::remove_all(dir);
 }

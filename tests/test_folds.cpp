@@ -1,6 +1,7 @@
 // Fold lines: mountain or valley by the dihedral sign, flat folds left out, ends pulled back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "foldkit/layout/folds.hpp"
@@ -39,8 +40,20 @@ TEST(Folds, OnRealMeshesEveryDrawnFoldIsBentEnoughAndEveryBentFoldIsDrawnOnce) {
       const auto& e = ex.unfolding.edges[f.edge];
       EXPECT_GE(std::fabs(e.fold_angle), o.flat_fold_rad);
       EXPECT_EQ(f.role, e.fold_angle > 0 ? PathRole::Mountain : PathRole::Valley);
-      const double length = e.length * 100;
-      EXPECT_NEAR(norm(f.b - f.a), length - 2 * std::min(o.inset_mm, 0.25 * length), 1e-6);
+      // The fold lies on its edge, pulled back equally at both ends, by at most inset_mm, and keeps at
+      // least half of the edge (a short edge is not scored away).
+      const auto k = std::find(p.faces.begin(), p.faces.end(), e.face[0]) - p.faces.begin();
+      ASSERT_LT(static_cast<std::size_t>(k), p.faces.size()) << "edge " << f.edge << " of another piece";
+      const Vec2 a = p.triangles_mm[k][e.corner[0]], b = p.triangles_mm[k][(e.corner[0] + 1) % 3];
+      const double length = norm(b - a);
+      const Vec2 along = (b - a) / length;
+      EXPECT_NEAR(cross(along, f.a - a), 0, 1e-9);
+      EXPECT_NEAR(cross(along, f.b - a), 0, 1e-9);
+      const double inset_a = dot(along, f.a - a), inset_b = dot(along, b - f.b);
+      EXPECT_NEAR(inset_a, inset_b, 1e-9) << "edge " << f.edge;
+      EXPECT_GT(inset_a, 0) << "edge " << f.edge;
+      EXPECT_LE(inset_a, o.inset_mm + 1e-9) << "edge " << f.edge;
+      EXPECT_GE(norm(f.b - f.a), 0.5 * length - 1e-9) << "edge " << f.edge;
       drawn[f.edge] += 1;
     }
   int flat = 0;

@@ -1,11 +1,13 @@
-// Every input a fuzzer ever found a problem with (tests/fuzz/regressions/<target>/) is replayed through
-// the same code path as its target, in every test run and under the asan preset: a foldkit::Error is
-// the expected outcome; a crash, sanitizer report or any other exception fails.
+// Every input a fuzzer ever found a problem with (tests/fuzz/regressions/<target>/), and every input of
+// its seed corpus (tests/fuzz/corpus/), is replayed through the same code path as its target, in every
+// test run and under the asan preset: a foldkit::Error is the expected outcome; a crash, sanitizer report
+// or any other exception fails, and so does a target with nothing to replay.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "fuzz/fuzz_device_sim.hpp"
+#include "fuzz/fuzz_device_streams.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -23,21 +26,36 @@ fs::path regressions() {
   return foldkit::test::source_dir() / "tests/fuzz/regressions";
 }
 
-std::vector<fs::path> inputs_of(const std::string& target) {
+// The seed corpus tests/fuzz/run starts `target` from (the same mapping as the script's).
+fs::path corpus_of(const std::string& target) {
+  const fs::path corpus = foldkit::test::source_dir() / "tests/fuzz/corpus";
+  const std::string load = "fuzz_load_";
+  if (target.rfind(load, 0) == 0) return corpus / target.substr(load.size());
+  return corpus / target.substr(std::string("fuzz_").size());
+}
+
+std::vector<fs::path> files_in(const fs::path& dir) {
   std::vector<fs::path> out;
-  if (!fs::is_directory(regressions() / target)) return out;
-  for (const auto& e : fs::directory_iterator(regressions() / target))
+  if (!fs::is_directory(dir)) return out;
+  for (const auto& e : fs::directory_iterator(dir))
     if (e.is_regular_file()) out.push_back(e.path());
   std::sort(out.begin(), out.end());
   return out;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+// What a fuzz target was found failing on (regressions/<target>/), then its seed corpus.
+std::vector<fs::path> inputs_of(const std::string& target) {
+  std::vector<fs::path> out = files_in(regressions() / target);
+  for (const fs::path& p : files_in(corpus_of(target)))
+    out.push_back(p);
+  return out;
 }
+
+std::span<const std::uint8_t> bytes_of(const std::string& data) {
+  return {reinterpret_cast<const std::uint8_t*>(data.data()), data.size()};
+}
+
+using foldkit::test::slurp;
 
 }  // namespace
 
@@ -49,18 +67,24 @@ TEST(FuzzRegressions, EveryRegressionFolderNamesAFuzzTarget) {
     if (!e.is_directory()) continue;
     EXPECT_NE(std::find(targets.begin(), targets.end(), e.path().filename().string()), targets.end())
         << e.path() << " is replayed by no test";
-    EXPECT_FALSE(inputs_of(e.path().filename().string()).empty()) << e.path() << " holds no input to replay";
+    EXPECT_FALSE(files_in(e.path()).empty()) << e.path() << " holds no input to replay";
   }
   // The folders with checked-in findings; losing one (or its files) must fail here, not skip silently.
   for (const std::string target :
        {"fuzz_load_obj", "fuzz_load_off", "fuzz_load_ply", "fuzz_device_gpgl", "fuzz_device_streams"})
-    EXPECT_FALSE(inputs_of(target).empty()) << "tests/fuzz/regressions/" << target << " is missing or empty";
+    EXPECT_FALSE(files_in(regressions() / target).empty())
+        << "tests/fuzz/regressions/" << target << " is missing or empty";
+  // Every target has inputs to replay: its findings or, at least, its seed corpus.
+  for (const auto& target : targets)
+    EXPECT_FALSE(inputs_of(target).empty()) << target << ": no regression or corpus input to replay";
 }
 
 TEST(FuzzRegressions, MeshInputsEndInAnInputErrorOrLoad) {
-  int replayed = 0;
   for (const std::string ext : {"obj", "off", "stl", "ply", "gltf", "glb"}) {
-    for (const auto& input : inputs_of("fuzz_load_" + ext)) {
+    const auto inputs = inputs_of("fuzz_load_" + ext);
+    EXPECT_FALSE(inputs.empty()) << "fuzz_load_" << ext << ": nothing replayed";
+    for (const auto& input : inputs) {
+      SCOPED_TRACE(input.string());
       const fs::path dir = foldkit::test::temp_dir("fuzz_regression");
       const fs::path copy = dir / ("input." + ext);  // load_mesh dispatches on the extension
       fs::copy_file(input, copy);
@@ -69,30 +93,50 @@ TEST(FuzzRegressions, MeshInputsEndInAnInputErrorOrLoad) {
       } catch (const foldkit::Error&) {
       }
       fs::remove_all(dir);
-      ++replayed;
     }
   }
-  EXPECT_GT(replayed, 0) << "the OFF count-overflow input at least is checked in";
+}
+
+TEST(FuzzRegressions, TheProfilesOfAProtocolAllSpeakIt) {
+  // Asked for GP-GL first, then HP-GL: a cache of the first answer would give GP-GL devices twice.
+  for (const auto protocol : {foldkit::devices::Protocol::Gpgl, foldkit::devices::Protocol::Hpgl}) {
+    const auto profiles = foldkit::fuzz::profiles_of(protocol);
+    EXPECT_FALSE(profiles.empty());
+    for (const auto& d : profiles)
+      EXPECT_EQ(d.protocol, protocol) << d.id;
+  }
 }
 
 TEST(FuzzRegressions, DeviceStreamsEndInADeviceErrorOrRun) {
-  // fuzz_device_streams builds its device in code; its inputs are replayed on both real protocols here.
+  using foldkit::devices::Protocol;
   for (const auto& [target, protocol] :
-       {std::pair{"fuzz_device_gpgl", foldkit::devices::Protocol::Gpgl},
-        std::pair{"fuzz_device_hpgl", foldkit::devices::Protocol::Hpgl},
-        std::pair{"fuzz_device_streams", foldkit::devices::Protocol::Gpgl},
-        std::pair{"fuzz_device_streams", foldkit::devices::Protocol::Hpgl}}) {
-    for (const auto& input : inputs_of(target)) {
-      const std::string data = slurp(input);
+       {std::pair{"fuzz_device_gpgl", Protocol::Gpgl}, std::pair{"fuzz_device_hpgl", Protocol::Hpgl}}) {
+    const auto profiles = foldkit::fuzz::profiles_of(protocol);
+    const auto inputs = inputs_of(target);
+    EXPECT_FALSE(inputs.empty()) << target << ": nothing replayed";
+    for (const auto& input : inputs) {
       SCOPED_TRACE(input.string());
-      foldkit::fuzz::run_simulated_device(protocol, reinterpret_cast<const std::uint8_t*>(data.data()),
-                                          data.size());
+      const std::string data = slurp(input);
+      foldkit::fuzz::run_simulated_device(profiles, bytes_of(data).data(), data.size());
     }
+  }
+  // fuzz_device_streams' findings through its own body, and on the built-in devices of both protocols.
+  const auto inputs = inputs_of("fuzz_device_streams");
+  EXPECT_FALSE(inputs.empty()) << "fuzz_device_streams: nothing replayed";
+  for (const auto& input : inputs) {
+    SCOPED_TRACE(input.string());
+    const std::string data = slurp(input);
+    foldkit::fuzz::run_device_streams(bytes_of(data).data(), data.size());
+    for (const auto protocol : {Protocol::Gpgl, Protocol::Hpgl})
+      foldkit::fuzz::run_simulated_device(foldkit::fuzz::profiles_of(protocol), bytes_of(data).data(),
+                                          data.size());
   }
 }
 
 TEST(FuzzRegressions, ProfileInputsEndInAnInputErrorOrLoad) {
-  for (const auto& input : inputs_of("fuzz_device_profile")) {
+  const auto inputs = inputs_of("fuzz_device_profile");
+  EXPECT_FALSE(inputs.empty()) << "fuzz_device_profile: nothing replayed";
+  for (const auto& input : inputs) {
     SCOPED_TRACE(input.string());
     try {
       foldkit::devices::load_device_profile(input);

@@ -95,8 +95,7 @@ std::optional<std::string> run_hp2xx(const std::string& stream, const std::files
   const std::string cmd =
       "hp2xx -t -m svg -f '" + out.string() + "' '" + in.string() + "' 2>'" + err.string() + "'";
   if (std::system(cmd.c_str()) != 0) return std::string("hp2xx failed");
-  std::ifstream e(err);
-  return std::string(std::istreambuf_iterator<char>(e), {});
+  return test::slurp(err);
 }
 
 TEST(Hpgl, RendersWithHp2xxWithNoIgnoredCommands) {

@@ -53,3 +53,16 @@ TEST(LabelAudit, TextsTurnedBeyondAQuarterTurnAndUnmarkedAmbiguousNumbersAreCoun
   EXPECT_EQ(a.turned, 2);
   EXPECT_EQ(a.unmarked, 1);
 }
+
+TEST(LabelAudit, ALabelAcrossAFoldLineIsCountedAndOneBesideItIsNot) {
+  Sheet s = sheet_with_cut_square();
+  s.paths.push_back({PathRole::Valley, {{50, 75}, {100, 75}}, false, 0});
+  s.paths.push_back({PathRole::Mountain, {{75, 50}, {75, 75}}, false, 0});
+  s.texts.push_back(label("12", {60, 70}));     // foot at y = 70, glyphs up to y = 67: clear of y = 75
+  s.texts.push_back(label("B13", {60, 76.5}));  // spans y 73.5..76.5 across the valley fold
+  s.texts.push_back(label("14", {73, 65}));     // spans x 73..78.7 across the mountain fold
+  const LabelAudit a = audit_labels(s);
+  EXPECT_EQ(a.labels, 3);
+  EXPECT_EQ(a.crossing_lines, 2);
+  EXPECT_EQ(a.touching, 0);
+}

@@ -47,16 +47,17 @@ TEST(LabelText, NoPartLetterHoldsAnIOrAnOAndEachReadsBackAsItsRank) {
 
 TEST(LabelText, ASeamLabelNamesItsMatesPartAndSheetOnlyWhenThoseDiffer) {
   EXPECT_EQ(seam_label_text(12, "", 0), "12");
-  EXPECT_EQ(seam_label_text(12, "B", 0), "B 12");
-  EXPECT_EQ(seam_label_text(12, "B", 3), "B 12 p3");
-  EXPECT_EQ(seam_label_text(9, "AA", 11), "AA 9. p11");
+  EXPECT_EQ(seam_label_text(12, "B", 0), "B12");
+  EXPECT_EQ(seam_label_text(12, "B", 3), "B12 p3");
+  EXPECT_EQ(seam_label_text(9, "AA", 11), "AA9. p11");
+  EXPECT_EQ(seam_label_text(12, "", 3), "12");  // inside one part the mate is on the same sheet
 }
 
 TEST(LabelText, TheSeamNumberIsReadBackFromAnyLabelForm) {
   EXPECT_EQ(seam_number_in("12"), 12);
   EXPECT_EQ(seam_number_in("9."), 9);
-  EXPECT_EQ(seam_number_in("B 12 p3"), 12);
-  EXPECT_EQ(seam_number_in("AA 16. p11"), 16);
+  EXPECT_EQ(seam_number_in("B12 p3"), 12);
+  EXPECT_EQ(seam_number_in("AA16. p11"), 16);
   EXPECT_EQ(seam_number_in("(7)"), 7);
   EXPECT_EQ(seam_number_in("A"), 0);
 }

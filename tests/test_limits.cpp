@@ -57,12 +57,7 @@ std::string binary_stl(std::uint32_t declared, std::size_t facets) {
 const char* kPlyHead =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using foldkit::test::slurp;
 
 }  // namespace
 

@@ -173,6 +173,62 @@ TEST_F(MeshIo, ReadsAnOffOctahedron) {
   expect_octahedron(load_mesh(write(dir, "o.off", off(kOctaVertices, kOctaFaces))));
 }
 
+// The OFF forms real writers produce, which OpenMesh's reader misread (it takes the counts from the line
+// after the magic word and knows no comments).
+TEST_F(MeshIo, ReadsOffWithCountsOnTheHeaderLineAndComments) {
+  std::string text = off(kOctaVertices, kOctaFaces);
+  text.replace(0, 4, "OFF ");  // "OFF 6 8 0" on one line
+  expect_octahedron(load_mesh(write(dir, "same_line.off", text)));
+  std::string commented = "# written by hand\n" + off(kOctaVertices, kOctaFaces);
+  commented.insert(commented.find("0 0 1\n") + 5, " # the north pole");
+  commented.insert(commented.find("\n3 ") + 1, "# faces\n");
+  expect_octahedron(load_mesh(write(dir, "commented.off", commented)));
+}
+
+TEST_F(MeshIo, ReadsABinaryOffOctahedronAsItsAsciiTwin) {
+  auto word = [](std::string& out, auto value) {
+    char b[4];
+    std::memcpy(b, &value, 4);
+    out.append(b, 4);
+  };
+  std::string bin = "OFF BINARY\n";
+  for (int n : {6, 8, 0})
+    word(bin, static_cast<std::int32_t>(n));
+  for (const Vec3& p : kOctaVertices)
+    for (double c : {p.x, p.y, p.z})
+      word(bin, static_cast<float>(c));
+  for (const auto& t : kOctaFaces) {
+    word(bin, std::int32_t{3});
+    for (int i : t)
+      word(bin, static_cast<std::int32_t>(i));
+    word(bin, std::int32_t{0});  // no colour
+  }
+  const LoadedMesh binary = load_mesh(write(dir, "b.off", bin));
+  expect_octahedron(binary);
+  const LoadedMesh ascii = load_mesh(write(dir, "a.off", off(kOctaVertices, kOctaFaces)));
+  ASSERT_EQ(binary.mesh.vertices.size(), ascii.mesh.vertices.size());
+  for (int v = 0; v < ascii.mesh.num_vertices(); ++v)
+    EXPECT_EQ(binary.mesh.vertices[v], ascii.mesh.vertices[v]) << v;
+  bin.resize(bin.size() - 6);
+  EXPECT_NE(problem_of(write(dir, "short.off", bin)).find("truncated file"), std::string::npos);
+}
+
+TEST_F(MeshIo, OffFaceColoursBecomeMaterials) {
+  std::string text = off(kOctaVertices, kOctaFaces);
+  // The first face red in bytes, the second blue in 0-1 floats, the rest without colour.
+  const auto first = text.find("\n3 ", text.find("0 0 -1")) + 1;
+  const auto first_end = text.find('\n', first);
+  text.insert(first_end, " 255 0 0");
+  const auto second_end = text.find('\n', text.find('\n', first) + 1);
+  text.insert(second_end, " 0.0 0.0 1.0 1.0");
+  const LoadedMesh m = load_mesh(write(dir, "c.off", text));
+  ASSERT_EQ(m.mesh.face_material.size(), 8u);
+  const auto colour_of_face = [&](int f) { return m.mesh.materials.at(m.mesh.face_material[f]).colour; };
+  EXPECT_EQ(colour_of_face(0), (Colour{1, 0, 0}));
+  EXPECT_EQ(colour_of_face(1), (Colour{0, 0, 1}));
+  EXPECT_EQ(colour_of_face(2), (Colour{1, 1, 1}));
+}
+
 TEST_F(MeshIo, ReadsAnAsciiPlyOctahedron) {
   expect_octahedron(load_mesh(write(dir, "o.ply", ply(kOctaVertices, kOctaFaces))));
 }
@@ -542,6 +598,9 @@ const std::vector<std::pair<std::string, std::string>> kHostileMeshes{
     {"ply_binary_double_coordinate_beyond_float.ply", "vertex 2: coordinate out of range"},
     {"ply_coordinate_beyond_float.ply", "vertex 2: coordinate out of range '1e39' (line 11)"},
     {"off_coordinate_beyond_float.off", "vertex 2: coordinate out of range '1e39' (line 4)"},
+    // Found by fuzz_load_off in CI: OpenMesh read these counts as binary words (170 million vertices).
+    {"off_binary_counts_written_as_text.off", "triangles, over the limit of"},
+    {"off_binary_face_count_huge.off", "face 1 declares 2147483647 vertices, more than the rest of the file"},
     {"obj_coordinate_beyond_float.obj", "vertex 2: coordinate out of range '1e39' (line 2)"},
 };
 

@@ -69,12 +69,7 @@ bool have(const std::string& tool) {
   return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 // A binary greyscale PGM (P5, maxval 255) as written by pdftoppm -gray.
 struct Gray {
@@ -100,7 +95,7 @@ Gray read_pgm(const fs::path& p) {
 }
 
 std::array<unsigned, 2> png_dimensions(const fs::path& p) {
-  const std::string bytes = read_all(p);
+  const std::string bytes = slurp(p);
   if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
   auto be32 = [&](std::size_t at) {
     unsigned v = 0;
@@ -248,9 +243,9 @@ TEST(RenderSvg, HasOneGroupPerRoleAndMillimetreDimensions) {
   const auto written = render_sheets(two_sheets(), dir / "layers.SVG");
   ASSERT_EQ(written.size(), 2u);
   EXPECT_EQ(written[1], dir / "layers-2.SVG");
-  const std::string svg = read_all(written[0]);
+  const std::string svg = slurp(written[0]);
   EXPECT_NE(svg.find("width=\"210mm\" height=\"297mm\" viewBox=\"0 0 210 297\""), std::string::npos);
-  EXPECT_NE(read_all(written[1]).find("width=\"420mm\" height=\"297mm\" viewBox=\"0 0 420 297\""),
+  EXPECT_NE(slurp(written[1]).find("width=\"420mm\" height=\"297mm\" viewBox=\"0 0 420 297\""),
             std::string::npos);
   for (const char* id : {"cut", "mountain", "valley", "tab", "label", "hint", "regmark"}) {
     EXPECT_NE(svg.find("<g id=\"" + std::string(id) + "\""), std::string::npos) << id;
@@ -264,7 +259,7 @@ TEST(RenderSvg, HasOneGroupPerRoleAndMillimetreDimensions) {
 TEST(RenderSvg, PutsEveryPathInTheGroupOfItsRole) {
   const fs::path dir = foldkit::test::temp_dir("render");
   render_sheets({sample_sheet({210, 297})}, dir / "roles.svg");
-  const std::string svg = read_all(dir / "roles.svg");
+  const std::string svg = slurp(dir / "roles.svg");
   auto group = [&](const std::string& id) {
     const auto start = svg.find("<g id=\"" + id + "\"");
     return svg.substr(start, svg.find("\n  </g>", start) - start);

@@ -2,6 +2,8 @@
 // (time limit, forced seams), the same result for the same seed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/search.hpp"
@@ -93,23 +95,48 @@ TEST(Search, OutOfTimeTheBestTreeIsCutApartIntoAValidUnfolding) {
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }
 
-TEST(Search, ACancelledSearchStillReturnsAValidUnfolding) {
-  const Mesh mesh = load("bob_350.obj");
+TEST(Search, ACancelledSearchStopsAtOnceAndStillReturnsAValidUnfolding) {
+  // fish_350's spanning tree overlaps (see above): cancelled before its first step, the search is not solved.
+  const Mesh mesh = load("fish_350.obj");
   const UnfoldContext ctx = make_context(mesh);
   int calls = 0;
-  SearchOptions opt;
-  // Restarting constantly keeps the search busy long enough for the callback to be asked.
-  opt.restart_after = 1;
-  opt.candidates_per_move = 1;
-  const SearchResult r = search_unfold(ctx, mst_folds(ctx), opt, [&](const UnfoldProgress&) {
+  const SearchResult r = search_unfold(ctx, mst_folds(ctx), SearchOptions{}, [&](const UnfoldProgress& p) {
     ++calls;
+    EXPECT_EQ(p.stage, "search");
     return false;
   });
+  EXPECT_EQ(calls, 1) << "asked before the first step, and never again after answering stop";
+  EXPECT_EQ(r.steps, 0);
+  EXPECT_FALSE(r.solved);
   const Unfolding u = flatten(mesh, r.cut);
-  EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{});
-  if (calls > 0) {
-    EXPECT_FALSE(r.solved);
+  EXPECT_GT(u.piece_count, 1);
+  EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
+}
+
+TEST(Search, TheProgressCallbackIsAskedDuringARoundAndItsAnswerStopsTheSearch) {
+  // A walk that can never move (no candidate moves, no restarts) and one round longer than the time
+  // limit: only reports from inside the round can reach the callback, and only its answer ends the walk.
+  const Mesh mesh = load("fish_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  SearchOptions opt;
+  opt.portfolio = 1;
+  opt.candidates_per_move = 0;
+  opt.restart_after = 1 << 30;
+  opt.round_steps = 1 << 30;
+  opt.time_limit_s = 20;
+  std::vector<UnfoldProgress> reports;
+  const SearchResult r = search_unfold(ctx, mst_folds(ctx), opt, [&](const UnfoldProgress& p) {
+    reports.push_back(p);
+    return reports.size() < 3;
+  });
+  ASSERT_EQ(reports.size(), 3u);
+  for (std::size_t k = 1; k < reports.size(); ++k) {
+    EXPECT_GT(reports[k].seconds, reports[k - 1].seconds);
+    EXPECT_GT(reports[k].iteration, reports[k - 1].iteration) << "steps counted as the walk goes";
   }
+  EXPECT_LT(reports.back().seconds, 10.0) << "stopped by the answer, not by the time limit";
+  EXPECT_FALSE(r.solved);
+  EXPECT_GE(r.steps, reports.back().iteration);
 }
 
 TEST(Search, ForcedCutsStayCutAndKeptEdgesStayFolded) {
@@ -136,6 +163,8 @@ TEST(Search, ForcedCutsStayCutAndKeptEdgesStayFolded) {
   }
   const Unfolding u = flatten(mesh, r.cut);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{});
-  // Face 0 cut all round is a piece of its own.
-  EXPECT_EQ(u.piece_count, r.solved ? 2 : u.piece_count);
+  // Face 0 cut all round is a piece of its own; solved, the rest is the other piece.
+  EXPECT_EQ(std::count(u.piece_of_face.begin(), u.piece_of_face.end(), u.piece_of_face[0]), 1);
+  ASSERT_TRUE(r.solved);
+  EXPECT_EQ(u.piece_count, 2);
 }

@@ -312,8 +312,7 @@ TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
   char magic[4] = {};
   png.read(magic, 4);
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
-  std::ifstream svg(dir / "cut.svg");
-  const std::string text((std::istreambuf_iterator<char>(svg)), {});
+  const std::string text = test::slurp(dir / "cut.svg");
   EXPECT_NE(text.find("<svg"), std::string::npos);
   EXPECT_NE(text.find("rgb(80%,10%,10%)"), std::string::npos) << "pen strokes drawn red";
   EXPECT_THROW(dev.render(dir / "cut.pdf"), OutputError);

@@ -77,8 +77,18 @@ TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
   const auto seams = find_seams(ex.unfolding, pieces);
   const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
   EXPECT_TRUE(plan.dropped.empty());
-  for (const auto& tab : plan.tab_of_seam)
+  ASSERT_EQ(pieces.size(), 1u);
+  ASSERT_EQ(pieces[0].outline_mm.size(), 1u);
+  const std::size_t n = pieces[0].outline_mm[0].size();
+  ASSERT_EQ(n, 6u);
+  std::vector<int> tabs_on_edge(n, 0);
+  for (const auto& tab : plan.tab_of_seam) {
     ASSERT_TRUE(tab.has_value());
+    tabs_on_edge[seams[tab->seam].sides[tab->side].index] += 1;
+  }
+  // Walking round the outline, an edge with a tab is followed by one without: three of each, alternating.
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_NE(tabs_on_edge[i], tabs_on_edge[(i + 1) % n]) << "outline edges " << i << " and " << (i + 1) % n;
 }
 
 // The default unfolding (one search piece, split to fit A4 at 150 mm) leaves few seams without a tab.

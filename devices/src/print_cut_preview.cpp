@@ -34,9 +34,10 @@ std::vector<std::vector<Vec2>> simulated_cuts_mm(const SimulatedDevice& sim, con
 }
 
 void render_print_and_cut(const Sheet& sheet, const std::vector<std::vector<Vec2>>& cuts_mm,
-                          const std::filesystem::path& png, double dpi) {
-  RenderOptions options;
-  options.png_dpi = dpi;
+                          const std::filesystem::path& png, const RenderOptions& print) {
+  RenderOptions options = print;
+  options.format = "png";
+  const double dpi = options.png_dpi;
   std::ostringstream printed;
   std::string error;
   if (!detail::write_png(printed, sheet, options, error)) throw OutputError(png.string(), error);

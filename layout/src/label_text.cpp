@@ -63,23 +63,21 @@ int letter_rank(const std::string& letter) {
 }
 
 std::string seam_label_text(int number, const std::string& mate_letter, int mate_sheet) {
-  std::string text = number_text(number);
-  if (mate_letter.empty()) return text;
-  text.insert(0, mate_letter + " ");
-  if (mate_sheet > 0) text.append(" p").append(std::to_string(mate_sheet));
+  // "B12" rather than "B 12": a space costs most of a digit's width, and on a small face that decides
+  // whether the label fits clear of the fold lines. The letter cannot be read as a digit (no I or O).
+  std::string text = mate_letter + number_text(number);
+  if (!mate_letter.empty() && mate_sheet > 0) text.append(" p").append(std::to_string(mate_sheet));
   return text;
 }
 
 int seam_number_in(const std::string& text) {
-  // The number is the first word that starts with a digit (the mate's letter comes before it).
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] < '0' || text[i] > '9' || (i > 0 && text[i - 1] != ' ' && text[i - 1] != '(')) continue;
-    int n = 0;
-    for (std::size_t j = i; j < text.size() && text[j] >= '0' && text[j] <= '9' && n < 100000000; ++j)
-      n = 10 * n + (text[j] - '0');
-    return n;
-  }
-  return 0;
+  // The number is the first run of digits: the mate's letter comes before it, the sheet after it.
+  const std::size_t i = text.find_first_of("0123456789");
+  if (i == std::string::npos) return 0;
+  int n = 0;
+  for (std::size_t j = i; j < text.size() && text[j] >= '0' && text[j] <= '9' && n < 100000000; ++j)
+    n = 10 * n + (text[j] - '0');
+  return n;
 }
 
 }  // namespace foldkit::layout

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <span>
 
 #include "foldkit/error.hpp"
 #include "foldkit/layout/arrows.hpp"
@@ -59,41 +60,34 @@ struct Draft {
   std::vector<Arrow> arrows;
   std::vector<std::string> letters;  // per piece
   std::vector<PieceLetter> piece_letters;
+  // What label placement was given, kept to place the labels again once the sheets are known.
+  std::vector<std::vector<FoldLine>> label_avoid;  // per piece: fold lines and arrows
+  std::vector<std::string> hints;                  // per seam
+  LabelOptions label_options;
+  std::vector<std::vector<Polygon>> label_taken;  // per piece: the part letter's footprint
 };
 
-// The sheet count to leave room for in seam labels (" p3"), 0 for none: only when the parts may
-// need more than one sheet, since the room costs legibility on small faces. A label whose mate ends up
-// on a sheet with more digits is shrunk into its box.
-int likely_sheets(const Draft& d, const LayoutOptions& o, std::optional<int> max_sheets) {
-  if ((max_sheets && *max_sheets <= 1) || d.pieces.size() < 2) return 0;
-  double area = 0;
-  for (const ScaledPiece& p : d.pieces)
-    area += p.area_mm2;
-  for (const auto& tab : d.tabs.tab_of_seam)
-    if (tab) area += signed_area(tab->quad_mm);
-  const Box2 printable = printable_area(o);
-  // Packing rarely fills more than 45% of a sheet with papercraft shapes.
-  const double sheets = area / (0.45 * printable.width() * printable.height());
-  return sheets > 1 ? static_cast<int>(std::ceil(sheets)) : 0;
-}
-
-// The longest text each side of each seam may print: the mate's letter when it is another part, and
-// room for a sheet number as large as the part count when the parts may spread over sheets.
-std::vector<std::array<std::string, 2>> reserved_texts(const Draft& d, int sheets) {
+// What each side of each seam prints: the mate's letter when it is another part, and the mate's sheet
+// (1-based) when `sheet_of_piece` is given and puts the mate on another sheet than the side.
+std::vector<std::array<std::string, 2>> seam_texts(const Draft& d, std::span<const int> sheet_of_piece = {}) {
   std::vector<std::array<std::string, 2>> texts(d.seams.size());
-  // Digits are all as wide: the likely sheet count stands for any sheet number of as many digits.
-  const int worst_sheet = sheets;
   for (std::size_t s = 0; s < d.seams.size(); ++s)
     for (int k = 0; k < 2; ++k) {
       const int own = d.seams[s].sides[k].piece, mate = d.seams[s].sides[1 - k].piece;
-      const bool other = mate >= 0 && mate != own;
-      texts[s][k] = seam_label_text(d.numbers[s], other ? d.letters[mate] : "", worst_sheet);
+      const bool other = mate >= 0 && own >= 0 && mate != own;
+      const bool elsewhere = other && !sheet_of_piece.empty() && sheet_of_piece[mate] != sheet_of_piece[own];
+      texts[s][k] = seam_label_text(d.numbers[s], other ? d.letters[mate] : "",
+                                    elsewhere ? sheet_of_piece[mate] + 1 : 0);
     }
   return texts;
 }
 
-Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
-                  std::optional<int> max_sheets) {
+std::vector<Label> place_draft_labels(const Draft& d, std::span<const std::array<std::string, 2>> texts) {
+  return place_labels(d.pieces, d.seams, d.numbers, d.tabs, d.label_avoid, d.hints, d.label_options, texts,
+                      d.label_taken);
+}
+
+Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
   Draft d;
   d.pieces = scaled_pieces(u, scale);
   d.seams = find_seams(u, d.pieces);
@@ -120,7 +114,8 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   const std::vector<int> rank = letter_ranks(static_cast<int>(d.pieces.size()), d.seams, d.order);
   for (int r : rank)
     d.letters.push_back(piece_letter(r));
-  std::vector<std::vector<Polygon>> taken(d.pieces.size());
+  std::vector<std::vector<Polygon>>& taken = d.label_taken;
+  taken.resize(d.pieces.size());
   if (o.piece_letters) {
     PieceLetterOptions letter_options;
     letter_options.min_mm = o.label_min_mm;
@@ -130,10 +125,11 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   }
 
   if (o.numbers) {
-    std::vector<std::vector<FoldLine>> avoid = d.folds;
+    std::vector<std::vector<FoldLine>>& avoid = d.label_avoid;
+    avoid = d.folds;
     for (const Arrow& a : d.arrows)
       avoid[a.piece].push_back({PathRole::Hint, a.tail_mm, a.tip_mm, -1});
-    std::vector<std::string> hints;
+    std::vector<std::string>& hints = d.hints;
     if (o.hints) {
       hints.resize(d.seams.size());
       for (std::size_t step = 0; step < d.order.size(); ++step) {
@@ -144,13 +140,14 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
         hint.push_back(')');
       }
     }
-    LabelOptions label_options;
+    LabelOptions& label_options = d.label_options;
     label_options.min_mm = o.label_min_mm;
     label_options.max_mm = o.label_max_mm;
     // Arrows sit along the edges: lift the labels above them.
     if (o.arrows) label_options.gap_mm = 1.6;
-    d.labels = place_labels(d.pieces, d.seams, d.numbers, d.tabs, avoid, hints, label_options,
-                            reserved_texts(d, likely_sheets(d, o, max_sheets)), taken);
+    // The sheets are not known yet: the labels are placed without the mate's sheet, and placed again
+    // where packing puts a mate on another sheet (relabel_for_sheets).
+    d.labels = place_draft_labels(d, seam_texts(d));
   }
   return d;
 }
@@ -290,6 +287,37 @@ std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
   return blocks;
 }
 
+// Places the labels again with the mate's sheet where packing put a mate on another sheet ("B12 p2").
+// Packing kept room for the first labels that stick out of tiny faces, so a piece takes its new labels
+// only when every one that sticks out stays inside the packed shape; otherwise it keeps the first ones,
+// and the longer texts shrink into their boxes when printed.
+void relabel_for_sheets(Draft& d, std::span<const PackItem> items, const PackResult& packed) {
+  if (d.labels.empty()) return;
+  std::vector<int> sheet_of_piece;
+  for (std::size_t p = 0; p < d.pieces.size(); ++p)
+    sheet_of_piece.push_back(packed.placements[p].sheet);
+  const std::vector<std::array<std::string, 2>> texts = seam_texts(d, sheet_of_piece);
+  std::vector<bool> changed(d.pieces.size(), false);
+  bool any = false;
+  for (const Label& l : d.labels)
+    if (l.text != texts[l.seam][l.side]) changed[l.piece] = any = true;
+  if (!any) return;
+  std::vector<Label> again = place_draft_labels(d, texts);
+  std::vector<bool> take = changed;
+  for (const Label& l : again) {
+    if (!take[l.piece] || !l.crowded) continue;
+    const std::array<Polygon, 1> box{l.box_mm};
+    const double inside = intersection_area(box, items[l.piece].shape_mm);
+    if (inside < signed_area(l.box_mm) - 1e-6) take[l.piece] = false;
+  }
+  std::vector<Label> labels;
+  for (const Label& l : d.labels)
+    if (!take[l.piece]) labels.push_back(l);
+  for (Label& l : again)
+    if (take[l.piece]) labels.push_back(std::move(l));
+  d.labels = std::move(labels);
+}
+
 // How much larger the model must be for the labels that found no clear spot to find one: per label,
 // the scale at which its face is wide enough for the label's box at its lift above the edge (a
 // triangle narrows linearly towards its apex), then the factor that leaves at most 2% of the labels
@@ -336,7 +364,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   const Box2 area = flip_box(area_down, paper_h);
   const Vec2 area_size{area.width(), area.height()};
 
-  Draft d = draw_pieces(u, o, scale, max_sheets);
+  Draft d = draw_pieces(u, o, scale);
   if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
     throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
                       " pieces, before packing them");
@@ -379,6 +407,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   }
   attempt.complete = true;
   r.paper_height_mm = paper_h;
+  relabel_for_sheets(d, items, packed);
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
     const PackPlacement& place = packed.placements[p];
     r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});

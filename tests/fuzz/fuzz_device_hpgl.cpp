@@ -2,5 +2,7 @@
 #include "fuzz_device_sim.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return foldkit::fuzz::run_simulated_device(foldkit::devices::Protocol::Hpgl, data, size);
+  // Read once per process: libFuzzer's entry point has no context to keep them in.
+  static const auto profiles = foldkit::fuzz::profiles_of(foldkit::devices::Protocol::Hpgl);
+  return foldkit::fuzz::run_simulated_device(profiles, data, size);
 }

@@ -14,18 +14,17 @@
 
 namespace foldkit::fuzz {
 
-inline const std::vector<devices::DeviceProfile>& profiles_of(devices::Protocol protocol) {
-  static const std::vector<devices::DeviceProfile> chosen = [protocol] {
-    std::vector<devices::DeviceProfile> out;
-    for (auto& d : devices::load_profiles(devices::builtin_profiles_dir()).devices)
-      if (d.protocol == protocol) out.push_back(d);
-    return out;
-  }();
-  return chosen;
+/// The built-in device profiles that speak `protocol`.
+inline std::vector<devices::DeviceProfile> profiles_of(devices::Protocol protocol) {
+  std::vector<devices::DeviceProfile> out;
+  for (auto& d : devices::load_profiles(devices::builtin_profiles_dir()).devices)
+    if (d.protocol == protocol) out.push_back(d);
+  return out;
 }
 
-inline int run_simulated_device(devices::Protocol protocol, const std::uint8_t* data, std::size_t size) {
-  const auto& profiles = profiles_of(protocol);
+/// Sends `data` (control byte first) to a simulated device built from one of `profiles`.
+inline int run_simulated_device(std::span<const devices::DeviceProfile> profiles, const std::uint8_t* data,
+                                std::size_t size) {
   if (size == 0 || profiles.empty()) return 0;
   const std::uint8_t control = data[0];
   const auto bytes = std::span(reinterpret_cast<const std::byte*>(data) + 1, size - 1);

@@ -19,11 +19,9 @@ inline void expect_golden(const std::string& name, const std::string& actual) {
     std::ofstream(file, std::ios::binary) << actual;
     return;
   }
-  std::ifstream in(file, std::ios::binary);
-  ASSERT_TRUE(in) << file << " is missing (run with FOLDKIT_UPDATE_GOLDEN=1 and review it)";
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string expected = buf.str();
+  ASSERT_TRUE(std::filesystem::is_regular_file(file))
+      << file << " is missing (run with FOLDKIT_UPDATE_GOLDEN=1 and review it)";
+  const std::string expected = slurp(file);
   std::size_t i = 0;
   while (i < expected.size() && i < actual.size() && expected[i] == actual[i])
     ++i;

@@ -55,12 +55,10 @@ fs::path temp_dir(const std::string& tag) {
   return p;
 }
 
-namespace {
-std::string slurp_file(const fs::path& p) {
+std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
-}  // namespace
 
 CliRun run_foldkit(const std::vector<std::string>& args) {
   const fs::path dir = temp_dir("run_foldkit");
@@ -90,8 +88,8 @@ CliRun run_foldkit(const std::vector<std::string>& args) {
   CliRun r;
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   r.signalled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) > 128);
-  r.out = slurp_file(dir / "out");
-  r.err = slurp_file(dir / "err");
+  r.out = slurp(dir / "out");
+  r.err = slurp(dir / "err");
   fs::remove_all(dir);
   return r;
 }

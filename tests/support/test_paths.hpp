@@ -18,6 +18,8 @@ std::optional<std::filesystem::path> shared_meshes();
 std::vector<std::filesystem::path> corpus_meshes(int max_faces);
 /// The built foldkit executable, for end-to-end tests of the CLI.
 std::filesystem::path foldkit_binary();
+/// The bytes of file `p` (empty when it cannot be read: the caller's expectations then fail).
+std::string slurp(const std::filesystem::path& p);
 /// A fresh empty directory under the system temp dir, unique per call.
 std::filesystem::path temp_dir(const std::string& tag);
 

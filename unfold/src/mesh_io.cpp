@@ -1,6 +1,7 @@
 // load_mesh: check the facts a reader might trust blindly (size, header counts, numbers), let OpenMesh's
 // readers parse into a polygon soup through our own importer (so that our validation, not OpenMesh's
-// TriMesh, decides what is wrong), then repair and validate the soup (mesh_io_soup.cpp).
+// TriMesh, decides what is wrong), then repair and validate the soup (mesh_io_soup.cpp). OFF, whose
+// OpenMesh reader cannot be made safe from outside, is read by foldkit itself (mesh_io_off.cpp).
 #include "foldkit/unfold/mesh_io.hpp"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
@@ -22,6 +23,8 @@
 #include "face_colours.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/decimate.hpp"
+#include "mesh_io_ascii.hpp"
+#include "mesh_io_off.hpp"
 #include "mesh_io_ply_body.hpp"
 #include "mesh_io_soup.hpp"
 
@@ -29,6 +32,10 @@ namespace foldkit::unfold {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::check_declared_counts;
+using detail::check_face_limit;
+using detail::in_coordinate_range;
+using detail::kMaxCoordinate;
 using detail::PolygonSoup;
 using detail::RawColours;
 
@@ -157,31 +164,12 @@ std::string lower(std::string s) {
   return s;
 }
 
-// OpenMesh's readers hold coordinates as float: a number beyond float range fails its stream
-// extraction and leaves the vertex uninitialised, so such a file is refused before OpenMesh reads it.
-constexpr double kMaxCoordinate = std::numeric_limits<float>::max();
-
-bool in_coordinate_range(double x) {
-  return std::fabs(x) <= kMaxCoordinate;
-}
-
 std::string read_all(const fs::path& path, const std::string& name) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name, "cannot open the file");
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-// OpenMesh's OBJ reader parses numbers with iostreams, which reject "nan" and "inf" and silently keep
-// going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
-// user can get wrong are checked here first, line by line, with file line numbers in the messages.
-// Checked on the counts a file declares, before OpenMesh parses and before any repair: a file over the
-// limit fails in a fraction of a second rather than after minutes of work and gigabytes of memory.
-void check_face_limit(std::uint64_t triangles, int face_limit, const std::string& name) {
-  if (triangles > static_cast<std::uint64_t>(face_limit))
-    throw InputError(name, "at least " + std::to_string(triangles) + " triangles, over the limit of " +
-                               std::to_string(face_limit) + " (decimate the mesh first)");
 }
 
 // An OBJ `l v1 v2 ...` element (corners may be "v/vt", negative numbers count back from the last
@@ -212,6 +200,9 @@ void read_obj_line_element(const char* q, const char* eol, long vertices, const 
     seams.push_back({{corners[i], corners[i + 1]}, line});
 }
 
+// OpenMesh's OBJ reader parses numbers with iostreams, which reject "nan" and "inf" and silently keep
+// going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
+// user can get wrong are checked here first, line by line, with file line numbers in the messages.
 // Returns the seams the file marks with `l` (line) elements, which OpenMesh's reader skips.
 std::vector<FileEdge> check_obj_text(const std::string& text, const std::string& name, int face_limit) {
   std::vector<FileEdge> seams;
@@ -346,143 +337,6 @@ void check_ascii_stl_text(const std::string& text, const std::string& name) {
   if (facets == 0) throw InputError(name, "no faces in the file");
 }
 
-// OFF and PLY headers announce counts; a file too short to hold them is truncated, and a reader would
-// otherwise loop on a failing stream.
-void check_declared_counts(std::uint64_t vertices, std::uint64_t faces, std::uint64_t min_bytes_per_vertex,
-                           std::uint64_t min_bytes_per_face, std::size_t file_bytes,
-                           const std::string& name) {
-  const std::uint64_t needed = vertices * min_bytes_per_vertex + faces * min_bytes_per_face;
-  if (vertices > (std::uint64_t{1} << 40) || faces > (std::uint64_t{1} << 40) || needed > file_bytes)
-    throw InputError(name, "truncated file: the header declares " + std::to_string(vertices) +
-                               " vertices and " + std::to_string(faces) + " faces, more than its " +
-                               std::to_string(file_bytes) + " bytes can hold");
-}
-
-// OpenMesh's ASCII OFF and PLY readers parse with iostreams: "nan" or a typo derails them into
-// misleading errors downstream. The vertex block is checked here so the message names the vertex.
-// Returns the position after the block. exact_numbers > 0: every vertex line has exactly that many
-// numbers (PLY, whose reader takes tokens, not lines, so one extra number shifts everything after it).
-std::size_t check_ascii_vertex_block(const std::string& text, std::size_t pos, std::uint64_t vertices,
-                                     const std::string& name, int exact_numbers = 0) {
-  const char* p = text.c_str() + std::min(pos, text.size());
-  const char* const end = text.c_str() + text.size();
-  std::size_t line_no = static_cast<std::size_t>(std::count(text.c_str(), p, '\n'));
-  std::uint64_t v = 0;
-  while (v < vertices && p < end) {
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-    if (!eol) eol = end;
-    const char* q = p;
-    p = eol + 1;
-    ++line_no;
-    const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
-    const std::string vertex = "vertex " + std::to_string(v + 1);
-    int numbers = 0;
-    while (q < eol) {
-      while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r'))
-        ++q;
-      if (q == eol || *q == '#') break;
-      const char* start = q;
-      while (q < eol && *q != ' ' && *q != '\t' && *q != '\r')
-        ++q;
-      const std::string tok(start, q);
-      char* stop = nullptr;
-      const double x = std::strtod(tok.c_str(), &stop);
-      if (stop != tok.c_str() + tok.size())
-        throw InputError(name, "unparsable coordinate '" + tok.substr(0, 32) + "' of " + vertex + where());
-      if (!std::isfinite(x)) throw InputError(name, vertex + " has a non-finite coordinate" + where());
-      if (!in_coordinate_range(x))
-        throw InputError(name, vertex + ": coordinate out of range '" + tok.substr(0, 32) + "'" + where());
-      ++numbers;
-    }
-    if (numbers == 0) continue;  // blank or comment line
-    if (numbers < 3) throw InputError(name, vertex + " has fewer than 3 coordinates" + where());
-    if (exact_numbers > 0 && numbers != exact_numbers)
-      throw InputError(name, vertex + " has " + std::to_string(numbers) + " values, the header declares " +
-                                 std::to_string(exact_numbers) + where());
-    ++v;
-  }
-  if (v < vertices)
-    throw InputError(
-        name, "truncated file: " + std::to_string(v) + " of " + std::to_string(vertices) + " vertices");
-  return static_cast<std::size_t>(std::min(p, end) - text.c_str());
-}
-
-// ASCII PLY and OFF faces: a count of at least 3 then that many indices below `vertices` (OFF may add
-// a colour after them), one face per line. OpenMesh's readers loop forever on some malformed face
-// blocks, or take a huge count on a line without indices as that many vertices to read from a failed
-// stream (found by fuzz_load_ply and fuzz_load_off).
-void check_ascii_faces(const std::string& text, std::size_t pos, std::uint64_t faces, std::uint64_t vertices,
-                       const std::string& name) {
-  std::istringstream in(text.substr(pos));
-  std::string line;
-  std::uint64_t f = 0;
-  while (f < faces && std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tok;
-    std::vector<std::string> w;
-    while (ls >> tok)
-      w.push_back(tok);
-    if (w.empty()) continue;
-    const auto integer = [&](const std::string& t, std::uint64_t& out) {
-      char* stop = nullptr;
-      errno = 0;
-      out = std::strtoull(t.c_str(), &stop, 10);
-      return !t.empty() && t[0] != '-' && errno == 0 && stop == t.c_str() + t.size();
-    };
-    std::uint64_t k = 0;
-    if (!integer(w[0], k) || k < 3 || w.size() < k + 1)
-      throw InputError(
-          name, "face " + std::to_string(f + 1) + ": unparsable vertex list '" + line.substr(0, 32) + "'");
-    for (std::uint64_t i = 1; i <= k; ++i) {
-      std::uint64_t index = 0;
-      // Vertices are numbered from 1 in messages, as for every other format.
-      const bool parsed = integer(w[i], index);
-      if (!parsed || index >= vertices)
-        throw InputError(name, "face " + std::to_string(f + 1) + " references vertex " +
-                                   (parsed ? std::to_string(index + 1) : w[i].substr(0, 24)) + " (only " +
-                                   std::to_string(vertices) + " vertices)");
-    }
-    ++f;
-  }
-  if (f < faces)
-    throw InputError(name,
-                     "truncated file: " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
-}
-
-void check_off_header(const std::string& text, const std::string& name, int face_limit) {
-  std::istringstream in(text);
-  std::string magic;
-  in >> magic;
-  if (magic.find("OFF") == std::string::npos) throw InputError(name, "not an OFF file (no OFF header)");
-  if (magic.find("n") != std::string::npos || magic.find("4") != std::string::npos)
-    throw InputError(name, "unsupported OFF variant '" + magic + "'");
-  std::string line;
-  long long nv = -1, nf = -1;
-  while (std::getline(in, line)) {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    // The first non-blank line is the counts line. Trying later lines instead would take vertex
-    // coordinates for counts when the real counts overflow, and OpenMesh then reserves for the huge ones.
-    std::istringstream ls(line);
-    if (!(ls >> nv >> nf)) nv = nf = -1;
-    break;
-  }
-  if (nv < 0 || nf < 0) throw InputError(name, "unparsable OFF header (no vertex and face counts)");
-  const bool binary = magic.find("BINARY") != std::string::npos;
-  check_face_limit(static_cast<std::uint64_t>(nf), face_limit, name);
-  check_declared_counts(static_cast<std::uint64_t>(nv), static_cast<std::uint64_t>(nf), binary ? 12 : 6,
-                        binary ? 16 : 8, text.size(), name);
-  if (!binary) {
-    const auto after_counts = in.tellg();
-    if (after_counts >= 0) {
-      const std::size_t faces_at = check_ascii_vertex_block(text, static_cast<std::size_t>(after_counts),
-                                                            static_cast<std::uint64_t>(nv), name);
-      check_ascii_faces(text, faces_at, static_cast<std::uint64_t>(nf), static_cast<std::uint64_t>(nv), name);
-    }
-  }
-}
-
 // OpenMesh's PLY reader loops forever or crashes on some malformed headers (an unknown keyword, an
 // element line without a count), so the header is checked strictly here: only what a triangle mesh needs.
 void check_ply_header(const std::string& text, const std::string& name, int face_limit) {
@@ -569,9 +423,11 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
   if (ascii) {
     const auto body = text.find('\n', end);
-    const std::size_t faces_at = check_ascii_vertex_block(
-        text, body == std::string::npos ? text.size() : body + 1, nv, name, vertex_properties);
-    check_ascii_faces(text, faces_at, nf, nv, name);
+    detail::AsciiBlockOptions block;
+    block.exact_vertex_numbers = vertex_properties;
+    const std::size_t faces_at = detail::read_ascii_vertex_block(
+        text, body == std::string::npos ? text.size() : body + 1, nv, name, block);
+    detail::read_ascii_faces(text, faces_at, nf, nv, name, block);
   } else {
     const std::size_t body = end + std::string("end_header").size() + (text[after] == '\r' ? 2 : 1);
     detail::check_binary_ply_body(std::string_view(text).substr(body), format == "binary_big_endian",
@@ -635,13 +491,15 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   } else if (ext == ".stl") {
     if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
     repair.weld_all = true;
-  } else if (ext == ".off") {
-    check_off_header(bytes, name, options.face_limit);
-  } else {
+  } else if (ext != ".off") {
     check_ply_header(bytes, name, options.face_limit);
   }
 
-  if (!gltf) {
+  if (ext == ".off") {
+    RawColours colours;
+    soup = detail::read_off(bytes, name, options.face_limit, colours);
+    detail::attach_raw_colours(std::move(colours), path.parent_path(), soup, reader_notes);
+  } else if (!gltf) {
     silence_openmesh();
     RawColours colours;
     SoupImporter importer(soup, colours);

@@ -35,6 +35,12 @@ void join_all_pieces(CutTree& tree, const EdgeConstraints& constraints) {
 
 namespace {
 
+// Steps a walk takes between two looks at the clock and the stop flag (and, on the calling thread, the
+// progress callback): rare enough to cost nothing, often enough to stop within a millisecond or so.
+constexpr int kCheckpointSteps = 16;
+// Least time between two progress reports.
+constexpr double kReportInterval_s = 0.2;
+
 int uniform(std::mt19937_64& rng, std::size_t n) {
   return static_cast<int>(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng));
 }
@@ -64,19 +70,35 @@ class Walker {
   const CutTree& tree() const { return tree_; }
   const std::vector<char>& best_fold() const { return best_fold_; }
 
-  /// Runs up to `budget` steps; stops early when solved or when `out_of_time()` says so (asked every
-  /// 16 steps). Returns false when stopped by `out_of_time`.
-  template <class OutOfTime>
-  bool run(int budget, const OutOfTime& out_of_time) {
+  /// Steps, best overlap count and piece count as of the last checkpoint: safe to read from another
+  /// thread while the walk runs (for progress reports).
+  int shown_steps() const { return shown_steps_.load(std::memory_order_relaxed); }
+  int shown_best() const { return shown_best_.load(std::memory_order_relaxed); }
+  int shown_pieces() const { return shown_pieces_.load(std::memory_order_relaxed); }
+
+  /// Runs up to `budget` steps; stops early when solved or when `should_stop()` says so (asked before
+  /// the first step and every kCheckpointSteps steps). Returns false when stopped by `should_stop`.
+  template <class ShouldStop>
+  bool run(int budget, const ShouldStop& should_stop) {
     for (int i = 0; i < budget && !solved(); ++i) {
-      if ((i & 15) == 0 && out_of_time()) return false;
+      if (i % kCheckpointSteps == 0) {
+        publish();
+        if (should_stop()) return false;
+      }
       step();
     }
+    publish();
     return true;
   }
 
  private:
   bool tabu(int e) const { return tabu_until_[e] > steps_; }
+
+  void publish() {
+    shown_steps_.store(steps_, std::memory_order_relaxed);
+    shown_best_.store(best_, std::memory_order_relaxed);
+    shown_pieces_.store(tree_.piece_count(), std::memory_order_relaxed);
+  }
 
   void step() {
     ++steps_;
@@ -196,6 +218,7 @@ class Walker {
   std::vector<int> side_, attach_, near_;
   int steps_ = 0, moves_ = 0, restarts_ = 0;
   int stall_ = 0, kick_ = 0, kicks_since_restart_ = 0;
+  std::atomic<int> shown_steps_{0}, shown_best_{0}, shown_pieces_{0};
 };
 
 }  // namespace
@@ -212,9 +235,29 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
 
   // Walker k uses seed + k. Built in parallel: the initial overlap test is a full pass over the mesh.
   std::vector<std::unique_ptr<Walker>> walkers(walkers_n);
-  std::atomic<bool> stop{false};
+  std::atomic<bool> stop{
+      false};  // set when `progress` answers false: every walk stops at its next checkpoint
   std::atomic<bool> timed_out{false};
+  // `progress`, asked on the calling thread only, at most every kReportInterval_s: at the checkpoints of
+  // the walks it runs (inside a round) and between rounds. The first report comes before any step.
+  const std::thread::id caller = std::this_thread::get_id();
+  double next_report_s = 0;
+  auto report = [&] {
+    if (!progress || stop.load(std::memory_order_relaxed)) return;
+    const double t = elapsed();
+    if (t < next_report_s) return;
+    next_report_s = t + kReportInterval_s;
+    int best = walkers[0]->shown_best(), steps = 0;
+    for (const auto& w : walkers) {
+      if (!w) continue;
+      best = std::min(best, w->shown_best());
+      steps += w->shown_steps();
+    }
+    if (!progress({opt.stage, steps, walkers[0]->shown_pieces(), static_cast<double>(best), t}))
+      stop.store(true, std::memory_order_relaxed);
+  };
   auto out_of_time = [&] {
+    if (std::this_thread::get_id() == caller) report();
     if (stop.load(std::memory_order_relaxed)) return true;
     if (elapsed() >= opt.time_limit_s) {
       timed_out.store(true, std::memory_order_relaxed);
@@ -248,26 +291,14 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
   // Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
   // wins, so the result depends on the seed only (unless the time limit or a cancel stops it).
   int winner = -1;
-  double next_report = 0.2;
   int round_steps = std::max(16, opt.round_steps / 8);
   for (int round = 0;; ++round) {
     for (int k = 0; k < walkers_n && winner < 0; ++k)
       if (walkers[k]->solved()) winner = k;
     if (winner >= 0 || timed_out.load() || stop.load()) break;
     if (elapsed() >= opt.time_limit_s) break;
-    if (progress) {
-      double t = elapsed();
-      if (t >= next_report) {
-        next_report = t + 0.2;
-        int best = walkers[0]->best(), steps = 0;
-        for (const auto& w : walkers) {
-          best = std::min(best, w->best());
-          steps += w->steps();
-        }
-        if (!progress({opt.stage, steps, walkers[0]->tree().piece_count(), static_cast<double>(best), t}))
-          break;
-      }
-    }
+    report();
+    if (stop.load()) break;
     const int budget = round_steps;
     round_steps = std::min(opt.round_steps, round_steps * 2);
     for_each_walker([&](int k) { walkers[k]->run(budget, out_of_time); });

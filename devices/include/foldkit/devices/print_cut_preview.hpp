@@ -16,8 +16,9 @@ namespace foldkit::devices {
 std::vector<std::vector<Vec2>> simulated_cuts_mm(const SimulatedDevice& sim, const DeviceProfile& device,
                                                  const std::string& mat);
 
-/// Writes a PNG of `sheet` as printed with `cuts_mm` over it in red. Atomic; throws OutputError.
+/// Writes a PNG of `sheet` as printed (in `print`'s styles, colours and fold lines, at its png_dpi) with
+/// `cuts_mm` over it in red. Atomic; throws OutputError.
 void render_print_and_cut(const Sheet& sheet, const std::vector<std::vector<Vec2>>& cuts_mm,
-                          const std::filesystem::path& png, double dpi = 150);
+                          const std::filesystem::path& png, const RenderOptions& print = {});
 
 }  // namespace foldkit::devices

@@ -51,7 +51,7 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
 
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
 /// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. `texts` (per
-/// seam and side, may be empty) is the longest text each side may print, e.g. "B 12 p3"; without it a
+/// seam and side, may be empty) is the longest text each side may print, e.g. "B12 p3"; without it a
 /// side prints number_text of its number. Obstacles are looked up through grids, so the time grows
 /// with the number of seams, not its square. `taken` (per piece, may be empty) are convex areas
 /// already used (part letters) that labels keep clear of like other labels.

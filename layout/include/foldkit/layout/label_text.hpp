@@ -20,12 +20,12 @@ std::string piece_letter(int index);
 /// The inverse of piece_letter (A = 0, … Z = 23, AA = 24, …); -1 for anything that is no part letter.
 int letter_rank(const std::string& letter);
 
-/// The label of a seam side: the bare number inside one part; "B 12" when the mate is part B on the
-/// same sheet; "B 12 p3" when the mate is on sheet 3. `mate_letter` empty means the same part;
+/// The label of a seam side: the bare number inside one part; "B12" when the mate is part B on the
+/// same sheet; "B12 p3" when the mate is on sheet 3. `mate_letter` empty means the same part;
 /// `mate_sheet` (1-based) is 0 when it is on this sheet.
 std::string seam_label_text(int number, const std::string& mate_letter, int mate_sheet);
 
-/// The seam number a label printed by seam_label_text names (0 when it names none): "B 12. p3" -> 12.
+/// The seam number a label printed by seam_label_text names (0 when it names none): "B12. p3" -> 12.
 int seam_number_in(const std::string& label_text);
 
 }  // namespace foldkit::layout

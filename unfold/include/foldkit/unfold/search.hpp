@@ -62,7 +62,9 @@ struct SearchResult {
 /// Runs the search from the fold forest `initial_fold` (pieces of one component are first stitched
 /// into one tree along their lightest edges), as a portfolio of walks on up to `threads` threads.
 /// Deterministic for a given seed, whatever the thread count, unless stopped by the time limit or by
-/// `progress` returning false (called between rounds, from the calling thread).
+/// `progress` returning false. `progress` is called from the calling thread only, at most every 0.2 s
+/// (the first time before any step), inside rounds as well as between them; once it returns false every
+/// walk stops within a few steps and is not asked again.
 SearchResult search_unfold(const UnfoldContext& context, std::vector<char> initial_fold,
                            const SearchOptions& options, const ProgressFn& progress = {});
 
