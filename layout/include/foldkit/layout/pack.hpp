@@ -33,6 +33,9 @@ struct PackOptions {
   double spacing_mm = 2;             ///< least gap between two items
   double cell_mm = 0.5;              ///< raster resolution: smaller packs tighter, costs more time
   int rotations = 8;                 ///< evenly spaced rotations tried (4: multiples of 90 degrees)
+  /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
+  /// needs (fewer for many items); 0: none.
+  int shaken_orders = 16;
   /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
   std::optional<int> max_sheets;
   /// When set, packing stops here with a LayoutError: no input makes it run unbounded.
