@@ -257,8 +257,10 @@ double unit_random(std::uint64_t& state) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
-// No packing needs fewer sheets than the items' cells (each at its leanest rotation) over a sheet's.
-long cell_bound(const std::vector<std::vector<Raster>>& rasters, long sheet_cells) {
+// The fewest sheets worth trying for: the items' cells (each at its leanest rotation, grown by half
+// the spacing) over the share of a sheet's cells that papercraft shapes can fill.
+long reachable_sheets(const std::vector<std::vector<Raster>>& rasters, long sheet_cells) {
+  constexpr double kReachableFill = 0.75;
   double cells = 0;
   for (const std::vector<Raster>& item : rasters) {
     long least = 0;
@@ -266,9 +268,8 @@ long cell_bound(const std::vector<std::vector<Raster>>& rasters, long sheet_cell
       if (r.cells > 0 && (least == 0 || r.cells < least)) least = r.cells;
     cells += static_cast<double>(least);
   }
-  return sheet_cells > 0
-             ? std::max(1L, static_cast<long>(std::ceil(cells / static_cast<double>(sheet_cells))))
-             : 1;
+  const double room = kReachableFill * static_cast<double>(sheet_cells);
+  return room > 0 ? std::max(1L, static_cast<long>(std::ceil(cells / room))) : 1;
 }
 
 // Shaken orders cost a packing run each, and a run costs more the more items there are: the count
@@ -389,10 +390,10 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   for (const std::vector<double>* key : {&area, &longest, &girth})
     consider(*key);
 
-  // When that leaves more sheets than the items' cells need, shaken largest-first orders (each area
-  // scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and seed:
-  // the same input always packs the same way.
-  const long bound = cell_bound(rasters, empty.free_cells());
+  // When that leaves more sheets than the items' cells could fill, shaken largest-first orders (each
+  // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
+  // seed: the same input always packs the same way.
+  const long bound = reachable_sheets(rasters, empty.free_cells());
   const int shaken = shaken_orders(items.size(), options.shaken_orders);
   std::uint64_t seed = kShakeSeed;
   for (int k = 0; k < shaken && best.unplaced.empty() && best.sheet_count > bound; ++k) {
