@@ -363,12 +363,16 @@ void setup_bench(CLI::App& app) {
       "--layout", *layout,
       "Benchmark the layout instead: sheets, area bound, parts, coverage and seams without a tab per "
       "mesh at 150 and 250 mm on A4 (meshes up to --max-faces, lowpoly/ included)");
+  auto sizes = std::make_shared<std::vector<double>>();
+  cmd->add_option("--sizes", *sizes, "With --layout: model sizes in mm (default 150 250)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber & CLI::Range(1.0, 10000.0));
   auto nest2d = std::make_shared<bool>(false);
   cmd->add_flag("--nest2d", *nest2d, "With --layout: pack with libnest2d instead of foldkit's packer");
   // Internal: what each child process runs.
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");
-  cmd->callback([a, layout, nest2d, cmd] {
+  cmd->callback([a, layout, sizes, nest2d, cmd] {
     if (*layout) {
       LayoutBenchArgs l;
       l.corpus = a->corpus;
@@ -378,6 +382,7 @@ void setup_bench(CLI::App& app) {
       if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
       l.json_out = a->json_out;
       l.nest2d = *nest2d;
+      if (!sizes->empty()) l.sizes_mm = *sizes;
       run_layout_bench(l);
     } else if (!a->one.empty())
       run_one(*a);

@@ -10,9 +10,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
 
+#include "test_images.hpp"
 #include "test_paths.hpp"
 
 namespace {
@@ -267,21 +266,8 @@ TEST(CliCut, TheRegistrationMarksPrintedAreTheOnesTheDeviceIsToldToFind) {
 
 namespace {
 
-struct Rgb {
-  int w = 0, h = 0;
-  std::vector<unsigned char> px;
-  const unsigned char* at(int x, int y) const { return &px[(static_cast<std::size_t>(y) * w + x) * 3]; }
-};
-
-Rgb read_rgb(const fs::path& p) {
-  Rgb img;
-  int channels = 0;
-  unsigned char* data = stbi_load(p.string().c_str(), &img.w, &img.h, &channels, 3);
-  if (!data) return img;
-  img.px.assign(data, data + static_cast<std::size_t>(img.w) * img.h * 3);
-  stbi_image_free(data);
-  return img;
-}
+using Rgb = foldkit::test::RgbImage;
+using foldkit::test::read_image;
 
 bool red(const unsigned char* p) {
   return p[0] > 160 && p[1] < 90 && p[2] < 90;
@@ -299,13 +285,13 @@ double share_on_print(const Rgb& over, const Rgb& print, int dx, int dy, int& re
   reds = 0;
   for (int y = kReach; y + kReach < over.h; ++y)
     for (int x = kReach; x + kReach < over.w; ++x) {
-      if (!red(over.at(x, y))) continue;
+      if (!red(over.px(x, y))) continue;
       ++reds;
       bool found = false;
       for (int v = -kReach; v <= kReach && !found; ++v)
         for (int u = -kReach; u <= kReach && !found; ++u) {
           const int px = x + u - dx, py = y + v - dy;
-          found = px >= 0 && py >= 0 && px < print.w && py < print.h && dark(print.at(px, py));
+          found = px >= 0 && py >= 0 && px < print.w && py < print.h && dark(print.px(px, py));
         }
       near += found;
     }
@@ -331,7 +317,7 @@ TEST(CliCut, TheOverlayShowsTheSimulatedCutOnTheLinesMakePrints) {
   r = run_foldkit(dir, cut);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("the simulated cut over the print: over.png"), std::string::npos) << r.out;
-  const Rgb print = read_rgb(dir / "print.png"), over = read_rgb(dir / "over.png");
+  const Rgb print = read_image(dir / "print.png"), over = read_image(dir / "over.png");
   ASSERT_GT(print.w, 0);
   ASSERT_EQ(over.w, print.w);
   ASSERT_EQ(over.h, print.h);

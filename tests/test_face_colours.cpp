@@ -177,6 +177,24 @@ TEST(FaceColours, AMissingMaterialLibraryIsANote) {
   fs::remove_all(dir);
 }
 
+TEST(FaceColours, MaterialsAreNamedAsTheObjsUsemtlNamesThem) {
+  const fs::path dir = test::temp_dir("colour_usemtl");
+  write(dir, "two.mtl", "newmtl roof tiles\nKd 0.8 0.2 0.1\nnewmtl walls\nKd 0.8 0.2 0.1\n");
+  const fs::path p = write(dir, "tet.obj",
+                           "mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl roof tiles\n"
+                           "f 1 3 2\nf 1 2 4\nusemtl walls\nf 1 4 3\nusemtl roof tiles\nf 2 3 4\n");
+  const Mesh m = load_mesh(p).mesh;
+  // The same colour under two names stays two materials, each with its faces.
+  ASSERT_EQ(m.materials.size(), 2u);
+  ASSERT_EQ(m.face_material.size(), 4u);
+  const auto name_of = [&](int f) { return m.materials.at(m.face_material[f]).name; };
+  EXPECT_EQ(name_of(0), "roof tiles");
+  EXPECT_EQ(name_of(1), "roof tiles");
+  EXPECT_EQ(name_of(2), "walls");
+  EXPECT_EQ(name_of(3), "roof tiles");
+  fs::remove_all(dir);
+}
+
 TEST(FaceColours, PlyFaceColoursBecomeMaterials) {
   const fs::path dir = test::temp_dir("colour_ply");
   const fs::path p = write(dir, "tet.ply",

@@ -2,7 +2,6 @@
 // its own region of its texture, the right way round, on Spot decimated to 500 faces and on a cube of
 // asymmetric glyphs; the bleed reaches past every cut line; tabs take their partner face's colour.
 #include <gtest/gtest.h>
-#include <stb/stb_image.h>
 
 #include <cmath>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "layout_fixtures.hpp"
+#include "test_images.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -25,36 +25,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Image {
-  int w = 0, h = 0;
-  std::vector<unsigned char> rgb;
-  std::array<double, 3> at(int x, int y) const {
-    x = std::clamp(x, 0, w - 1);
-    y = std::clamp(y, 0, h - 1);
-    const unsigned char* p = &rgb[(static_cast<std::size_t>(y) * w + x) * 3];
-    return {p[0] / 255.0, p[1] / 255.0, p[2] / 255.0};
-  }
-  /// Bilinear between texel centres, as a printer's (and Cairo's) magnification sees the texture.
-  std::array<double, 3> at_uv(Vec2 uv) const {
-    const double x = uv.x * w - 0.5, y = (1 - uv.y) * h - 0.5;
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    std::array<double, 3> out{};
-    for (int ch = 0; ch < 3; ++ch)
-      out[ch] = (1 - fx) * (1 - fy) * at(x0, y0)[ch] + fx * (1 - fy) * at(x0 + 1, y0)[ch] +
-                (1 - fx) * fy * at(x0, y0 + 1)[ch] + fx * fy * at(x0 + 1, y0 + 1)[ch];
-    return out;
-  }
-};
+using test::read_image;
+using Image = test::RgbImage;
 
-Image read_image(const fs::path& p) {
-  Image img;
-  int channels = 0;
-  unsigned char* data = stbi_load(p.string().c_str(), &img.w, &img.h, &channels, 3);
-  if (!data) return img;
-  img.rgb.assign(data, data + static_cast<std::size_t>(img.w) * img.h * 3);
-  stbi_image_free(data);
-  return img;
+/// Bilinear between texel centres, as a printer's (and Cairo's) magnification sees the texture.
+std::array<double, 3> at_uv(const Image& texture, Vec2 uv) {
+  const double x = uv.x * texture.w - 0.5, y = (1 - uv.y) * texture.h - 0.5;
+  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+  const double fx = x - x0, fy = y - y0;
+  std::array<double, 3> out{};
+  for (int ch = 0; ch < 3; ++ch)
+    out[ch] = (1 - fx) * (1 - fy) * texture.at(x0, y0)[ch] + fx * (1 - fy) * texture.at(x0 + 1, y0)[ch] +
+              (1 - fx) * fy * texture.at(x0, y0 + 1)[ch] + fx * fy * texture.at(x0 + 1, y0 + 1)[ch];
+  return out;
 }
 
 struct Printed {
@@ -127,7 +110,7 @@ SampleScore sample_faces(const Printed& p, const Image& texture, double inset_mm
       }
       if (!inside) continue;
       const Vec2 uv = p.mesh.face_uv[f][0] * w[0] + p.mesh.face_uv[f][1] * w[1] + p.mesh.face_uv[f][2] * w[2];
-      const auto want = texture.at_uv(uv);
+      const auto want = at_uv(texture, uv);
       const auto got =
           p.pages[sheet].at(static_cast<int>(at.x * px_per_mm), static_cast<int>(at.y * px_per_mm));
       double diff = 0;

@@ -1,10 +1,6 @@
 // The assembly guide: every part drawn in its colour and marked with its letter.
 #include <gtest/gtest.h>
 
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -14,6 +10,7 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/layout/guide.hpp"
 #include "layout_fixtures.hpp"
+#include "test_images.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -67,9 +64,10 @@ TEST(Guide, TheRenderedGuideShowsEveryPartsColour) {
   devices::RenderOptions options;
   options.png_dpi = 100;
   devices::render_sheets({g.guide}, png, options);
-  int w = 0, h = 0, channels = 0;
-  unsigned char* pixels = stbi_load(png.string().c_str(), &w, &h, &channels, 3);
-  ASSERT_NE(pixels, nullptr);
+  const test::RgbImage image = test::read_image(png);
+  ASSERT_GT(image.w, 0);
+  const int w = image.w, h = image.h;
+  const unsigned char* pixels = image.rgb.data();
   // The palette has twelve colours; parts beyond repeat them (their letters tell them apart).
   const int parts = std::min(g.split.unfolding.piece_count, 12);
   std::vector<int> seen(parts, 0);
@@ -87,7 +85,6 @@ TEST(Guide, TheRenderedGuideShowsEveryPartsColour) {
       seen[p] += err < 0.02;
     }
   }
-  stbi_image_free(pixels);
   for (int p = 0; p < parts; ++p)
     EXPECT_GT(seen[p], 50) << "colour of tint " << p;
 }

@@ -77,6 +77,9 @@ void attach_raw_colours(RawColours raw, const fs::path& texture_dir, PolygonSoup
   raw.face_uvs.resize(n);
   raw.face_colour.resize(n);
   raw.face_texture.resize(n, -1);
+  // Names are per `f` line of the file; should the reader's faces not be those lines one to one, no
+  // name is better than a wrong one.
+  if (raw.face_material_name.size() != n) raw.face_material_name.assign(n, -1);
   bool any_uv = false, any_colour = false;
   for (std::size_t f = 0; f < n; ++f) {
     if (!raw.face_colour[f] && !raw.vertex_colour.empty())
@@ -89,7 +92,8 @@ void attach_raw_colours(RawColours raw, const fs::path& texture_dir, PolygonSoup
   if (any_uv) soup.polygon_uvs = std::move(raw.face_uvs);
   if (!any_colour) return;
 
-  std::map<std::tuple<double, double, double, int>, int> material_of;
+  // Materials as the file names them: two `usemtl` of the same colour stay two materials.
+  std::map<std::tuple<double, double, double, int, int>, int> material_of;
   soup.polygon_material.assign(n, -1);
   for (std::size_t f = 0; f < n; ++f) {
     const Colour c = raw.face_colour[f].value_or(Colour{});
@@ -97,7 +101,8 @@ void attach_raw_colours(RawColours raw, const fs::path& texture_dir, PolygonSoup
     int tex = raw.face_texture[f];
     if (tex >= 0 && (soup.polygon_uvs.empty() || soup.polygon_uvs[f].empty())) tex = -1;
     if (tex >= 0 && !raw.texture_names.count(tex)) tex = -1;
-    const auto key = std::make_tuple(c.r, c.g, c.b, tex);
+    const int named = raw.face_material_name[f];
+    const auto key = std::make_tuple(c.r, c.g, c.b, tex, named);
     auto [it, inserted] = material_of.try_emplace(key, static_cast<int>(soup.materials.size()));
     if (inserted) {
       Material m;
@@ -112,6 +117,8 @@ void attach_raw_colours(RawColours raw, const fs::path& texture_dir, PolygonSoup
       } else {
         m.name = hex_colour(c);
       }
+      if (named >= 0 && !raw.material_names[static_cast<std::size_t>(named)].empty())
+        m.name = raw.material_names[static_cast<std::size_t>(named)];
       soup.materials.push_back(std::move(m));
     }
     soup.polygon_material[f] = it->second;

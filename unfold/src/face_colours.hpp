@@ -19,6 +19,8 @@ struct RawColours {
   std::vector<int> face_texture;                     ///< OpenMesh's texture index of the material, -1 none
   std::map<int, std::string> texture_names;          ///< texture index -> map_Kd as written in the MTL
   std::vector<std::optional<Colour>> vertex_colour;  ///< PLY vertex colours
+  std::vector<std::string> material_names;           ///< OBJ `usemtl` names
+  std::vector<int> face_material_name;               ///< per polygon, index into material_names or -1
 };
 
 /// Sets soup.polygon_uvs, polygon_material and materials from `raw`: one material per distinct

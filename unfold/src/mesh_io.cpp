@@ -200,12 +200,36 @@ void read_obj_line_element(const char* q, const char* eol, long vertices, const 
     seams.push_back({{corners[i], corners[i + 1]}, line});
 }
 
+std::string trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return std::string(s.substr(first, last - first + 1));
+}
+
+// Material names are few: a linear search keeps them in the order the file first uses them.
+int material_index(std::vector<std::string>& names, const std::string& material) {
+  const auto it = std::find(names.begin(), names.end(), material);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  names.push_back(material);
+  return static_cast<int>(names.size()) - 1;
+}
+
 // OpenMesh's OBJ reader parses numbers with iostreams, which reject "nan" and "inf" and silently keep
 // going, and it skips faces with fewer than three corners (the mark of a truncated file). So the facts a
 // user can get wrong are checked here first, line by line, with file line numbers in the messages.
 // Returns the seams the file marks with `l` (line) elements, which OpenMesh's reader skips.
-std::vector<FileEdge> check_obj_text(const std::string& text, const std::string& name, int face_limit) {
-  std::vector<FileEdge> seams;
+// What an OBJ says that OpenMesh's reader does not pass on.
+struct ObjFacts {
+  std::vector<FileEdge> seams;              ///< `l` (line) elements
+  std::vector<std::string> material_names;  ///< `usemtl` names in order of first use
+  std::vector<int> face_material_name;      ///< per face, index into material_names (-1: none)
+};
+
+ObjFacts check_obj_text(const std::string& text, const std::string& name, int face_limit) {
+  ObjFacts facts;
+  std::vector<FileEdge>& seams = facts.seams;
+  int current_material = -1;
   // Pointer scanning, not iostreams: this pass runs over every byte of files up to the size limit.
   // std::string keeps a terminating NUL, so strtod/strtol stop at the end of the buffer too.
   const char* p = text.c_str();
@@ -229,6 +253,10 @@ std::vector<FileEdge> check_obj_text(const std::string& text, const std::string&
     const char* q = p;
     p = eol + 1;
     const std::string_view tag = next_token(q, eol);
+    if (tag == "usemtl") {
+      current_material = material_index(facts.material_names, trimmed(std::string_view(q, eol - q)));
+      continue;
+    }
     if (tag != "v" && tag != "f" && tag != "l") continue;
     const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
     if (tag == "v") {
@@ -269,9 +297,10 @@ std::vector<FileEdge> check_obj_text(const std::string& text, const std::string&
                                    "face with only " + std::to_string(corners) + " corners" + where());
       triangles += static_cast<std::uint64_t>(corners - 2);
       check_face_limit(triangles, face_limit, name);
+      facts.face_material_name.push_back(current_material);
     }
   }
-  return seams;
+  return facts;
 }
 
 // A binary STL is an 80-byte header, a 32-bit triangle count and 50 bytes per triangle: the size must
@@ -482,12 +511,14 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   std::vector<std::string> reader_notes;
   PolygonSoup soup;
   LoadedMesh out;
+  ObjFacts obj;
   // The first vertex number in the format's own face lists (glTF indices count from 0 too).
   out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
   if (gltf) {
     soup = detail::read_gltf(path, name, options.max_file_bytes, reader_notes);
   } else if (ext == ".obj") {
-    out.file_seams = check_obj_text(bytes, name, options.face_limit);
+    obj = check_obj_text(bytes, name, options.face_limit);
+    out.file_seams = obj.seams;
   } else if (ext == ".stl") {
     if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
     repair.weld_all = true;
@@ -518,6 +549,8 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
         if (!fs::is_regular_file(*mtl, exists_ec))
           reader_notes.push_back("material library " + mtl->string() + " not found: faces print white");
       }
+    colours.material_names = std::move(obj.material_names);
+    colours.face_material_name = std::move(obj.face_material_name);
     detail::attach_raw_colours(std::move(colours), texture_dir, soup, reader_notes);
   }
   if (soup.polygons.empty()) throw InputError(name, "no faces in the file");

@@ -1,5 +1,6 @@
 #include "foldkit/unfold/unfold.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -13,6 +14,22 @@
 #include "foldkit/unfold/search.hpp"
 
 namespace foldkit::unfold {
+namespace {
+
+// The cuts `cut` with their slits closed where a move allows (slits.hpp).
+std::vector<char> without_slits(const UnfoldContext& ctx, const std::vector<char>& cut,
+                                const EdgeConstraints& constraints, const UnfoldOptions& options,
+                                double seconds_left) {
+  if (!options.close_slits) return cut;
+  CutTree tree(ctx, folds_from_cuts(cut));
+  if (tree.overlap_count() > 0) return cut;
+  SlitOptions so = options.slits;
+  so.time_limit_s = std::clamp(seconds_left, 0.0, so.time_limit_s);
+  const SlitResult r = close_slits(tree, constraints, so);
+  return r.moves > 0 ? tree.cut_flags() : cut;
+}
+
+}  // namespace
 
 UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const ProgressFn& progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -43,7 +60,8 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       so.constraints = constraints;
       const SearchResult r = search_unfold(
           ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight, constraints)), so, progress);
-      result.unfolding = flatten(mesh, r.cut);
+      result.unfolding =
+          flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
       result.method = "search";
       result.iterations = r.steps;
       if (!r.solved)
@@ -61,7 +79,8 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
-      result.unfolding = flatten(mesh, r.cut);
+      result.unfolding =
+          flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
       result.method = r.method;
       result.iterations = r.generations;
       break;

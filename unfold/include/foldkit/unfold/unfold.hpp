@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/slits.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
 namespace foldkit::unfold {
@@ -37,6 +38,10 @@ struct UnfoldOptions {
   /// Triangles of a planar input polygon, and coplanar neighbours, within this angle of one normal are one
   /// flat face that is never cut (see flat_faces.hpp).
   double flat_angle_rad = 0.5 * 3.14159265358979323846 / 180.0;
+  /// After the search or the GA, move cuts away from leaves at nearly flat vertices (slits.hpp), where
+  /// no glue tab fits.
+  bool close_slits = true;
+  SlitOptions slits;
 };
 
 /// Progress report while unfolding; return false to cancel (the best result so far is returned).

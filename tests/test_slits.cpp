@@ -1,0 +1,138 @@
+// Closing slits: fewer cut-tree leaves at nearly flat vertices, the unfolding still one valid piece,
+// forced seams and the curvature rule kept, the same result every time.
+#include <gtest/gtest.h>
+
+#include "foldkit/unfold/curvature.hpp"
+#include "foldkit/unfold/dual_graph.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/search.hpp"
+#include "foldkit/unfold/slits.hpp"
+#include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/unfolding.hpp"
+#include "test_paths.hpp"
+
+using namespace foldkit;
+using namespace foldkit::unfold;
+
+namespace {
+
+Mesh load(const std::string& name) {
+  return load_mesh(test::example_mesh(name)).mesh;
+}
+
+// The search's one overlap-free piece of `mesh`, as a CutTree.
+CutTree solved_tree(const UnfoldContext& ctx, const EdgeConstraints& constraints = {}) {
+  SearchOptions opt;
+  opt.constraints = constraints;
+  const SearchResult r =
+      search_unfold(ctx, folds_from_cuts(spanning_forest_cuts(*ctx.mesh, ctx.weight, constraints)), opt);
+  EXPECT_TRUE(r.solved);
+  return CutTree(ctx, folds_from_cuts(r.cut));
+}
+
+}  // namespace
+
+class SlitsOnExamples : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SlitsOnExamples, MostSlitsCloseAndTheUnfoldingStaysOneValidPiece) {
+  const Mesh mesh = load(GetParam());
+  const UnfoldContext ctx = make_context(mesh);
+  CutTree tree = solved_tree(ctx);
+  const SlitOptions opt;
+  const std::vector<double> defect = angle_defects(mesh);
+  const int before = count_slits(tree, defect, opt.min_leaf_defect_rad);
+  const SlitResult r = close_slits(tree, {}, opt);
+  EXPECT_EQ(r.slits_before, before);
+  EXPECT_EQ(r.slits_after, count_slits(tree, defect, opt.min_leaf_defect_rad));
+  EXPECT_GT(before, 10);
+  EXPECT_LE(2 * r.slits_after, before) << "closed only " << before - r.slits_after << " of " << before;
+  EXPECT_EQ(tree.overlap_count(), 0);
+  EXPECT_EQ(tree.piece_count(), 1);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    EXPECT_GE(tree.cut_count(v), ctx.required_cuts[v]) << "vertex " << v;
+  const Unfolding u = flatten(mesh, tree.cut_flags());
+  EXPECT_EQ(u.piece_count, 1);
+  EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{});
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, SlitsOnExamples, ::testing::Values("spot_350.obj", "bob_350.obj"));
+
+TEST(Slits, ALeafIsASlitOnlyWhereTheDefectIsSmall) {
+  const Mesh mesh = load("spot_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  const CutTree tree = solved_tree(ctx);
+  const std::vector<double> defect = angle_defects(mesh);
+  int leaves = 0, slits = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const bool slit = is_slit(tree, defect, v, 0.5);
+    if (tree.cut_count(v) == 1) ++leaves;
+    slits += slit;
+    if (slit) {
+      EXPECT_EQ(tree.cut_count(v), 1);
+      EXPECT_LT(defect[v], 0.5);
+    }
+  }
+  EXPECT_GT(slits, 0);
+  EXPECT_LT(slits, leaves);  // spot's ears, horns and hooves are leaves with room
+  EXPECT_EQ(count_slits(tree, defect, 0.0), 0);
+}
+
+TEST(Slits, ForcedCutsAndFoldsAreKept) {
+  const Mesh mesh = load("bob_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  // Forbid cutting, and force, every tenth edge of a first solution's folds and cuts.
+  const CutTree first = solved_tree(ctx);
+  EdgeConstraints c;
+  c.force_cut.assign(mesh.num_edges(), 0);
+  c.force_fold.assign(mesh.num_edges(), 0);
+  for (int e = 0; e < mesh.num_edges(); e += 10)
+    (first.folded(e) ? c.force_fold : c.force_cut)[e] = 1;
+  CutTree tree = solved_tree(ctx, c);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (c.fold(e)) {
+      ASSERT_TRUE(tree.folded(e));
+    }
+    if (c.cut(e)) {
+      ASSERT_FALSE(tree.folded(e));
+    }
+  }
+  const SlitResult r = close_slits(tree, c, {});
+  EXPECT_GT(r.moves, 0);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (c.fold(e)) {
+      EXPECT_TRUE(tree.folded(e)) << "edge " << e;
+    }
+    if (c.cut(e)) {
+      EXPECT_FALSE(tree.folded(e)) << "edge " << e;
+    }
+  }
+  EXPECT_EQ(tree.overlap_count(), 0);
+}
+
+TEST(Slits, TheSameTreeGivesTheSameCuts) {
+  const Mesh mesh = load("spot_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  CutTree a = solved_tree(ctx);
+  CutTree b = a;
+  close_slits(a, {}, {});
+  close_slits(b, {}, {});
+  EXPECT_EQ(a.fold_flags(), b.fold_flags());
+}
+
+TEST(Slits, TheUnfoldingStageClosesThemUnlessAskedNotTo) {
+  const Mesh mesh = load("bob_350.obj");
+  UnfoldOptions with, without;
+  without.close_slits = false;
+  const UnfoldResult a = unfold_mesh(mesh, with), b = unfold_mesh(mesh, without);
+  const UnfoldContext ctx = make_context(mesh);
+  const std::vector<double> defect = angle_defects(mesh);
+  auto slits = [&](const Unfolding& u) {
+    std::vector<char> cut(u.edges.size());
+    for (std::size_t e = 0; e < u.edges.size(); ++e)
+      cut[e] = u.edges[e].cut;
+    return count_slits(CutTree(ctx, folds_from_cuts(cut)), defect, SlitOptions{}.min_leaf_defect_rad);
+  };
+  EXPECT_EQ(a.unfolding.piece_count, 1);
+  EXPECT_LT(2 * slits(a.unfolding), slits(b.unfolding));
+  EXPECT_EQ(check_unfolding(mesh, a.unfolding), std::vector<std::string>{});
+}
