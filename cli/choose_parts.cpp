@@ -54,6 +54,42 @@ layout::LayoutOptions estimate_options(layout::LayoutOptions o) {
   return o;
 }
 
+// Parts and packing together: when the layout leaves more sheets than the area needs, the parts
+// alone on the last sheet are cut smaller (half, then a third of the room) and the whole is packed
+// again; smaller, rounder parts slip into the gaps of the sheets before. Kept when that saves a sheet.
+template <class Estimate, class LayOut>
+void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, unfold::PartOptions po,
+                        long bound, Estimate& estimate, LayOut& lay_out, Candidate& best) {
+  constexpr double kFractions[] = {0.5, 0.35};
+  constexpr int kFewMoreParts = 4;
+  for (std::size_t t = 0; t < std::size(kFractions); ++t) {
+    if (best.sheets <= bound || !best.layout) return;
+    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
+    po.also_split.clear();
+    int last = 0;
+    for (const layout::PiecePlacement& placement : best.layout->placements)
+      last = std::max(last, placement.sheet);
+    for (std::size_t p = 0; p < best.layout->placements.size(); ++p)
+      if (best.layout->placements[p].sheet == last) po.also_split.push_back(static_cast<int>(p));
+    po.room_fraction = kFractions[t];
+    po.growth = unfold::PartGrowth::Round;
+    Candidate c;
+    c.parts = unfold::split_into_parts(mesh, best.parts.unfolding, po);
+    c.parts.split_pieces = best.parts.split_pieces;
+    c.hull_area = hull_area(c.parts.unfolding);
+    // A sheet is worth a few more parts, not a model in confetti.
+    const int most_parts =
+        best.parts.unfolding.piece_count + std::max(kFewMoreParts, best.parts.unfolding.piece_count / 4);
+    if (c.parts.unfolding.piece_count > most_parts ||
+        c.parts.unfolding.piece_count == best.parts.unfolding.piece_count)
+      continue;
+    estimate(c);
+    if (c.sheets >= best.sheets) continue;
+    lay_out(c);
+    if (c.rank() < best.rank()) best = std::move(c);
+  }
+}
+
 }  // namespace
 
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
@@ -105,10 +141,11 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
       {1.0, unfold::PartGrowth::Round}, {0.7, unfold::PartGrowth::Tree},  {0.5, unfold::PartGrowth::Tree},
       {0.85, unfold::PartGrowth::Tree}, {0.7, unfold::PartGrowth::Round}, {0.5, unfold::PartGrowth::Round},
       {0.35, unfold::PartGrowth::Tree}};
-  // Large meshes try the first three only, so their layout stays fast; a count, not a clock, so the
-  // same input always gives the same parts.
+  // Large meshes try the first three only, with fewer full layouts and no re-split of the last
+  // sheet, so their layout stays fast; a count, not a clock, so the same input gives the same parts.
   constexpr int kManyFaces = 1500;
-  const std::size_t trials = mesh.num_faces() > kManyFaces ? 3 : std::size(tries);
+  const bool large = mesh.num_faces() > kManyFaces;
+  const std::size_t trials = large ? 3 : std::size(tries);
   auto best_estimate = [&] {
     return std::min_element(candidates.begin(), candidates.end(),
                             [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
@@ -122,19 +159,29 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     candidates.push_back(std::move(c));
   }
 
-  // The best estimate gets its full layout; when the labels cost it a sheet, the runner-up whose
-  // estimate beats that gets one too, and the better full layout wins.
+  // The best estimate gets its full layout; while the next estimate could still beat the best full
+  // layout so far (the labels can cost a sheet), that one gets a full layout too (at most three in
+  // all, two for large meshes), and the best full layout wins.
+  const std::size_t full_layouts = large ? 2 : 3;
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
-  const long estimated_second = candidates.size() > 1 ? candidates[1].sheets : 0;
   lay_out(candidates[0]);
-  if (candidates.size() > 1 && candidates[0].sheets > estimated_second) {
-    lay_out(candidates[1]);
-    if (candidates[1].rank() < candidates[0].rank()) std::swap(candidates[0], candidates[1]);
+  for (std::size_t k = 1; k < std::min(candidates.size(), full_layouts); ++k) {
+    // Parts do not change between estimate and layout: a candidate can win only on fewer sheets, or
+    // as many with fewer parts.
+    const Candidate& held = candidates[0];
+    const Candidate& next = candidates[k];
+    if (!(next.sheets < held.sheets || (next.sheets == held.sheets &&
+                                        next.parts.unfolding.piece_count < held.parts.unfolding.piece_count)))
+      break;
+    lay_out(candidates[k]);
+    if (candidates[k].rank() < candidates[0].rank()) std::swap(candidates[0], candidates[k]);
   }
-  Candidate& best = candidates[0];
-  return {std::move(best.parts.unfolding), best.parts.split_pieces, best.parts.new_pieces,
-          std::move(best.layout)};
+  Candidate best = std::move(candidates[0]);
+  if (!large) resplit_last_sheet(mesh, o, po, bound, estimate, lay_out, best);
+  const int untouched = u.piece_count - best.parts.split_pieces;
+  return {std::move(best.parts.unfolding), best.parts.split_pieces,
+          best.parts.unfolding.piece_count - untouched, std::move(best.layout)};
 }
 
 }  // namespace foldkit::cli
