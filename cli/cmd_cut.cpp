@@ -26,6 +26,7 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
+#include "installed_data.hpp"
 #include "interrupt.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
@@ -229,7 +230,7 @@ void setup_cut(CLI::App& app) {
                   ExitCode::Usage);
 
     std::optional<devices::StrokeFont> font;
-    if (args->labels) font = devices::load_stroke_font(devices::default_stroke_font_path());
+    if (args->labels) font = load_label_font();
     devices::PlanOptions plan;
     plan.mat = args->mat;
     plan.draw_labels = args->labels;

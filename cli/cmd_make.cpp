@@ -19,6 +19,7 @@
 #include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/guide.hpp"
+#include "installed_data.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "output_paths.hpp"
@@ -87,7 +88,7 @@ std::string remove_stale_files(const std::string& output, std::size_t sheet_coun
 std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
                                                 const devices::RenderOptions& render) {
   if (render.format != "dxf") return devices::render_sheets(sheets, output, render);
-  const devices::StrokeFont font = devices::load_stroke_font(devices::default_stroke_font_path());
+  const devices::StrokeFont font = load_label_font();
   return devices::write_dxf_sheets(sheets, output, {&font});
 }
 
@@ -103,7 +104,7 @@ std::string bundle_name(const std::string& mesh) {
 std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const std::string& mesh,
                                                 const std::string& dir, const devices::RenderOptions& render,
                                                 double size_mm) {
-  const devices::StrokeFont font = devices::load_stroke_font(devices::default_stroke_font_path());
+  const devices::StrokeFont font = load_label_font();
   devices::BundleOptions options;
   options.name = bundle_name(mesh);
   options.render = render;

@@ -73,7 +73,11 @@ void setup_profiles(CLI::App& app) {
                          {"score", settings(m.score)},
                          {"draw", settings(m.draw)},
                          {"file", m.file.string()}});
-      std::cout << nlohmann::json{{"devices", devs}, {"media", media}}.dump(2) << "\n";
+      nlohmann::json dirs = nlohmann::json::array();
+      for (const auto& dir : cli_profile_dirs())
+        dirs.push_back(dir.string());
+      std::cout << nlohmann::json{{"profile_dirs", dirs}, {"devices", devs}, {"media", media}}.dump(2)
+                << "\n";
       return;
     }
     std::printf("Devices (--device):\n  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", "ID", "NAME", "LANG", "USB",

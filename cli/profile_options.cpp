@@ -1,7 +1,7 @@
 #include "profile_options.hpp"
 
-#include <filesystem>
-#include <system_error>
+#include "foldkit/error.hpp"
+#include "installed_data.hpp"
 
 namespace foldkit::cli {
 
@@ -12,11 +12,22 @@ void add_profile_options(CLI::App& cmd, std::vector<std::string>& files) {
       ->check(CLI::ExistingFile);
 }
 
+std::vector<std::filesystem::path> cli_profile_dirs() {
+  return devices::profile_dirs(this_install());
+}
+
 devices::ProfileSet load_cli_profiles(const std::vector<std::string>& files) {
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  std::vector<std::filesystem::path> extra(files.begin(), files.end());
-  return devices::load_profiles(devices::builtin_profiles_dir(ec ? std::filesystem::path() : exe), extra);
+  const std::vector<std::filesystem::path> extra(files.begin(), files.end());
+  devices::ProfileSet set = devices::load_profiles(cli_profile_dirs(), extra);
+  if (set.devices.empty() && set.media.empty()) {
+    std::string looked;
+    for (const auto& dir : devices::profile_search_dirs(this_install()))
+      looked += (looked.empty() ? "" : ", ") + dir.string();
+    throw Error("no device or media profiles found (looked in " + (looked.empty() ? "no folder" : looked) +
+                    "); the installation is incomplete",
+                ExitCode::Failure);
+  }
+  return set;
 }
 
 }  // namespace foldkit::cli

@@ -1,6 +1,7 @@
 #pragma once
 // The profile options `cut` and `profiles` share: --profile FILE (repeatable) on top of the built-in
-// profiles found beside the build or the executable.
+// profiles found relative to the executable and the user's own (devices/install_paths.hpp).
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,12 @@ namespace foldkit::cli {
 /// Adds --profile FILE (repeatable) to `cmd`, bound to `files`.
 void add_profile_options(CLI::App& cmd, std::vector<std::string>& files);
 
-/// The built-in profiles plus `files`. Throws InputError naming the file and key of a bad profile.
+/// The profile folders this process reads, in order: the installed (or build tree's) built-in ones, then
+/// the user's.
+std::vector<std::filesystem::path> cli_profile_dirs();
+
+/// The profiles of cli_profile_dirs plus `files`. Throws InputError naming the file and key of a bad
+/// profile, and Error naming the folders looked in when there is no profile at all.
 devices::ProfileSet load_cli_profiles(const std::vector<std::string>& files);
 
 }  // namespace foldkit::cli

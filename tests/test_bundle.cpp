@@ -73,7 +73,7 @@ PngHeader png_header(const fs::path& p) {
 }
 
 const devices::StrokeFont& font() {
-  static const devices::StrokeFont f = devices::load_stroke_font(devices::default_stroke_font_path());
+  static const devices::StrokeFont f = devices::load_stroke_font(foldkit::test::stroke_font_path());
   return f;
 }
 

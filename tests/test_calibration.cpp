@@ -32,7 +32,7 @@ using namespace foldkit::devices;
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(builtin_profiles_dir());
+  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   return set;
 }
 

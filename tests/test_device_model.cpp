@@ -10,12 +10,13 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
+#include "test_paths.hpp"
 
 namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(builtin_profiles_dir());
+  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   return set;
 }
 

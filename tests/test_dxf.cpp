@@ -81,7 +81,7 @@ std::vector<std::string> declared_layers(const std::vector<Group>& g) {
 }
 
 const devices::StrokeFont& font() {
-  static const devices::StrokeFont f = devices::load_stroke_font(devices::default_stroke_font_path());
+  static const devices::StrokeFont f = devices::load_stroke_font(foldkit::test::stroke_font_path());
   return f;
 }
 

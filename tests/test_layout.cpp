@@ -24,6 +24,22 @@ using namespace foldkit::layout;
 
 namespace {
 
+// Whether a sheet's part list ("parts A-C, F") names `letter`.
+bool lists_part(const std::string& line, const std::string& letter) {
+  const int rank = letter_rank(letter);
+  std::size_t at = line.find(' ');
+  while (at != std::string::npos && at + 1 < line.size()) {
+    const std::size_t end = std::min(line.find(", ", at + 1), line.size());
+    const std::string item = line.substr(at + 1, end - at - 1);
+    const std::size_t dash = item.find('-');
+    const int first = letter_rank(item.substr(0, dash));
+    const int last = dash == std::string::npos ? first : letter_rank(item.substr(dash + 1));
+    if (first <= rank && rank <= last) return true;
+    at = end < line.size() ? end + 1 : std::string::npos;
+  }
+  return false;
+}
+
 const char* const kExamples[] = {"spot_350.obj", "bob_350.obj", "fish_350.obj", "penguin_500.obj"};
 
 LayoutOptions at_size(double size_mm) {
@@ -147,10 +163,11 @@ TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
     for (const Text& t : r.sheets[s].texts) {
       if (t.role != PathRole::Label) continue;
       double nearest = 1e300;
-      // The middle of the label's box (page frame, y down: glyphs grow towards (sin, -cos)).
+      // The middle of the label's box, descenders included (page frame, y down: glyphs grow towards
+      // (sin, -cos)).
       const Vec2 along{std::cos(t.angle_rad), std::sin(t.angle_rad)}, up{along.y, -along.x};
       const Vec2 centre = t.at_mm + along * (0.5 * label_width_mm(t.text, t.height_mm, LabelOptions{})) +
-                          up * (0.5 * t.height_mm);
+                          up * (0.5 * (t.height_mm - label_descent_mm(t.text, t.height_mm)));
       for (const auto& [sheet, ends] : copies[seam_number_in(t.text)]) {
         if (sheet != static_cast<int>(s)) continue;
         // Distance from the label's middle to the edge segment.
@@ -334,9 +351,10 @@ TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
   int missing = 0;
   for (int step = 1; step <= ex.unfolding.seam_count(); ++step)
     missing += steps_shown.count("(" + number_text(step) + ")") == 0;
-  // Labels that name their mate's part and sheet take room the step marks had: up to one in five goes
-  // (33 of 196 here).
-  EXPECT_LE(missing, ex.unfolding.seam_count() / 5) << missing << " seams without a step mark";
+  // Every label gets a clear spot before any gets its step mark, and a step mark crosses a fold line
+  // rather than go, but never touches the outline or a label: not much more than one in four goes (50 of
+  // 196 here, the brackets' descenders taking their room too).
+  EXPECT_LE(missing, 0.28 * ex.unfolding.seam_count()) << missing << " seams without a step mark";
   std::printf("%d of %d seams without a step mark on the sheets\n", missing, ex.unfolding.seam_count());
 }
 
@@ -403,7 +421,13 @@ TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
       sides[r.seam_number[e]] = {split.unfolding.piece_of_face[edge.face[0]],
                                  split.unfolding.piece_of_face[edge.face[1]]};
     }
-  int cross = 0, other_sheet = 0;
+  // Each sheet lists its parts ("parts A-C, F"): where a label has no room for the mate's sheet, the
+  // list on the mate's sheet names the mate.
+  std::vector<std::string> parts_line(r.sheets.size());
+  for (std::size_t k = 0; k < r.sheets.size(); ++k)
+    for (const Text& t : r.sheets[k].texts)
+      if (t.role == PathRole::Sheet && t.text.rfind("part", 0) == 0) parts_line[k] = t.text;
+  int cross = 0, other_sheet = 0, with_sheet = 0;
   for (const Sheet& sheet : r.sheets)
     for (const Text& t : sheet.texts) {
       if (t.role != PathRole::Label) continue;
@@ -414,13 +438,23 @@ TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
       }
       ++cross;
       const int mate = t.piece == a ? b : a;
-      std::string expected = r.piece_letters[mate] + number_text(seam_number_in(t.text));
-      if (r.placements[mate].sheet != r.placements[t.piece].sheet) {
-        ++other_sheet;
-        expected += " p" + std::to_string(r.placements[mate].sheet + 1);
+      const std::string brief = r.piece_letters[mate] + number_text(seam_number_in(t.text));
+      const int mate_sheet = r.placements[mate].sheet;
+      if (mate_sheet == r.placements[t.piece].sheet) {
+        EXPECT_EQ(t.text, brief);
+        continue;
       }
-      EXPECT_EQ(t.text, expected);
+      ++other_sheet;
+      if (t.text == brief) {
+        EXPECT_TRUE(lists_part(parts_line[mate_sheet], r.piece_letters[mate]))
+            << t.text << ": sheet " << mate_sheet + 1 << " lists " << parts_line[mate_sheet];
+      } else {
+        EXPECT_EQ(t.text, brief + " p" + std::to_string(mate_sheet + 1));
+        ++with_sheet;
+      }
     }
   EXPECT_GT(cross, 0);
   EXPECT_GT(other_sheet, 0);
+  // " p2" costs nearly three digits' width: on spot_350 at 150 mm a fifth of these labels have room for it.
+  EXPECT_GT(with_sheet, 0) << "labels with room name the mate's sheet";
 }

@@ -221,7 +221,7 @@ std::span<const std::byte> bytes(const std::string& s) {
   return {reinterpret_cast<const std::byte*>(s.data()), s.size()};
 }
 std::string device_error(foldkit::devices::Protocol protocol, const std::string& stream) {
-  const auto set = foldkit::devices::load_profiles(foldkit::devices::builtin_profiles_dir());
+  const auto set = foldkit::devices::load_profiles(foldkit::test::profiles_dir());
   foldkit::devices::SimOptions o;
   o.require_initialize = false;
   foldkit::devices::SimulatedDevice device(

@@ -5,17 +5,18 @@
 #include "foldkit/devices/plan.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
+#include "test_paths.hpp"
 
 namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(builtin_profiles_dir());
+  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   return set;
 }
 
 const StrokeFont& font() {
-  static const StrokeFont f = load_stroke_font(default_stroke_font_path());
+  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
   return f;
 }
 
@@ -239,4 +240,20 @@ TEST(Plan, CountsEveryStrokeAndItsLengthInTheStatistics) {
 }
 
 }  // namespace
+TEST(Plan, ThePenDrawsPartLettersBesideTheSeamNumbers) {
+  Sheet sheet = test::two_piece_sheet();
+  const Vec2 at = sheet.texts.front().at_mm + Vec2{0, -6};
+  sheet.texts.push_back({"B", at, 6, 0, PathRole::Piece, 0});
+  PlanOptions o;
+  o.draw_labels = true;
+  o.font = &font();
+  const Job job = plan_job(sheet, profiles().device("cameo4"), profiles().medium("copy-80"), o);
+  const Pass* draw = find_pass(job, PassKind::Draw);
+  ASSERT_NE(draw, nullptr);
+  int letter_strokes = 0;
+  for (const Stroke& s : draw->strokes)
+    letter_strokes += s.role == PathRole::Piece;
+  EXPECT_GE(letter_strokes, 2) << "a B takes its upright and its bowls";
+}
+
 }  // namespace foldkit::devices

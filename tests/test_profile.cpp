@@ -38,7 +38,7 @@ std::string load_error(const fs::path& file) {
 }
 
 TEST(Profile, EveryBuiltInProfileLoads) {
-  const ProfileSet set = load_profiles(builtin_profiles_dir());
+  const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   EXPECT_EQ(set.devices.size(), 10u);
   EXPECT_EQ(set.media.size(), 4u);
   for (const DeviceProfile& d : set.devices) {
@@ -131,13 +131,13 @@ TEST(Profile, AUserProfileReplacesTheBuiltInOneWithTheSameId) {
     text.replace(text.find("product = 0x1137"), 16, "product = 0x1139");
     std::ofstream(dir / "cameo4.toml") << text;
   }
-  const ProfileSet set = load_profiles(builtin_profiles_dir(), {dir / "cameo4.toml"});
+  const ProfileSet set = load_profiles(foldkit::test::profiles_dir(), {dir / "cameo4.toml"});
   EXPECT_EQ(set.device("cameo4").usb_product, 0x1139);
   EXPECT_EQ(set.devices.size(), 10u);
 }
 
 TEST(Profile, UnknownIdsListTheKnownOnes) {
-  const ProfileSet set = load_profiles(builtin_profiles_dir());
+  const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   try {
     (void)set.device("cameo9");
     FAIL();

@@ -19,12 +19,12 @@ namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(builtin_profiles_dir());
+  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
   return set;
 }
 
 const StrokeFont& font() {
-  static const StrokeFont f = load_stroke_font(default_stroke_font_path());
+  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
   return f;
 }
 

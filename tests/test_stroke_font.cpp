@@ -16,7 +16,6 @@ namespace fs = std::filesystem;
 using foldkit::Box2;
 using foldkit::InputError;
 using foldkit::Vec2;
-using foldkit::devices::default_stroke_font_path;
 using foldkit::devices::load_stroke_font;
 using foldkit::devices::StrokeFont;
 using foldkit::devices::text_advance_mm;
@@ -45,8 +44,9 @@ std::size_t point_count(const Strokes& strokes) {
 // Hershey fonts are a Debian package; the project's set-up installs it, but a bare machine may lack it.
 const StrokeFont* futural() {
   static const std::optional<StrokeFont> font =
-      fs::exists(default_stroke_font_path()) ? std::optional(load_stroke_font(default_stroke_font_path()))
-                                             : std::nullopt;
+      fs::exists(foldkit::test::stroke_font_path())
+          ? std::optional(load_stroke_font(foldkit::test::stroke_font_path()))
+          : std::nullopt;
   return font ? &*font : nullptr;
 }
 
@@ -58,7 +58,7 @@ fs::path write_file(const std::string& name, const std::string& contents) {
 
 #define REQUIRE_FONT()      \
   if (futural() == nullptr) \
-  GTEST_SKIP() << "hershey-fonts-data not installed (" << default_stroke_font_path() << ")"
+  GTEST_SKIP() << "hershey-fonts-data not installed (" << foldkit::test::stroke_font_path() << ")"
 
 }  // namespace
 
@@ -141,7 +141,7 @@ TEST(StrokeFont, TextStrokesOfASheetTextMatchTheExplicitCall) {
 }
 
 TEST(StrokeFont, LoadsEveryFontOfTheDebianPackage) {
-  const fs::path dir = default_stroke_font_path().parent_path();
+  const fs::path dir = foldkit::test::stroke_font_path().parent_path();
   if (!fs::is_directory(dir)) GTEST_SKIP() << "hershey-fonts-data not installed (" << dir << ")";
   int fonts = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {

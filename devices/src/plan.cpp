@@ -283,13 +283,14 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
         draw.items.push_back({placed(p.points_mm), p.closed, p.role, i, p.piece, describe(p, i)});
     }
     if (!sheet.texts.empty() && !options.font) throw DeviceError("cannot draw labels: no stroke font loaded");
+    // Seam numbers and part letters: a part cut from blank card is found by its letter too.
     for (std::size_t i = 0; i < sheet.texts.size(); ++i) {
       const Text& t = sheet.texts[i];
-      if (t.role != PathRole::Label) continue;
+      if (t.role != PathRole::Label && t.role != PathRole::Piece) continue;
+      const std::string what = t.role == PathRole::Piece ? "part letter \"" : "text \"";
       for (auto& stroke : text_strokes(*options.font, t)) {
         if (stroke.size() >= 2)
-          draw.items.push_back(
-              {placed(stroke), false, PathRole::Label, i, t.piece, "text \"" + t.text + "\""});
+          draw.items.push_back({placed(stroke), false, t.role, i, t.piece, what + t.text + "\""});
       }
     }
     if (!draw.items.empty()) plans.push_back(std::move(draw));

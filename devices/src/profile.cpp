@@ -479,24 +479,13 @@ const MediaProfile& ProfileSet::medium(const std::string& id) const {
   throw InputError("--media " + id, "no such media profile (known: " + known_ids(media) + ")");
 }
 
-fs::path builtin_profiles_dir(const fs::path& executable) {
-  std::error_code ec;
-#ifdef FOLDKIT_PROFILES_DIR
-  if (fs::is_directory(fs::path(FOLDKIT_PROFILES_DIR) / "devices", ec)) return FOLDKIT_PROFILES_DIR;
-#endif
-  if (!executable.empty()) {
-    const fs::path bin = executable.parent_path();
-    for (const fs::path& candidate :
-         {bin / "profiles", bin.parent_path() / "profiles", bin.parent_path() / "share/foldkit/profiles"}) {
-      if (fs::is_directory(candidate / "devices", ec)) return candidate;
-    }
-  }
-  return {};
+ProfileSet load_profiles(const fs::path& dir, const std::vector<fs::path>& extra_files) {
+  return load_profiles(dir.empty() ? std::vector<fs::path>{} : std::vector<fs::path>{dir}, extra_files);
 }
 
-ProfileSet load_profiles(const fs::path& dir, const std::vector<fs::path>& extra_files) {
+ProfileSet load_profiles(const std::vector<fs::path>& dirs, const std::vector<fs::path>& extra_files) {
   ProfileSet set;
-  if (!dir.empty()) {
+  for (const fs::path& dir : dirs) {
     for (const fs::path& f : toml_files(dir / "devices"))
       put(set.devices, load_device_profile(f));
     for (const fs::path& f : toml_files(dir / "media"))

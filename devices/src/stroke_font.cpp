@@ -110,10 +110,6 @@ const StrokeGlyph* StrokeFont::glyph(char32_t code) const {
   return &glyphs[code - first_code];
 }
 
-std::filesystem::path default_stroke_font_path() {
-  return "/usr/share/hershey-fonts/futural.jhf";
-}
-
 StrokeFont load_stroke_font(const std::filesystem::path& path) {
   const std::string file = path.string();
   std::ifstream in(path, std::ios::binary);

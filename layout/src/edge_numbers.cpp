@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 #include "foldkit/layout/box_grid.hpp"
@@ -11,29 +12,10 @@
 namespace foldkit::layout {
 namespace {
 
-struct Segment {
-  Vec2 a, b;
-  Box2 box;
-  bool fold = false;  // fold lines may be crossed when nothing else is left; outlines never
-};
-
 // Grid cells of about a label's size: a query looks at a handful of cells.
 constexpr double kGridCell_mm = 4;
 // Labels may sit on tabs or stick out of tiny faces: the grid covers that much around the piece.
 constexpr double kGridBorder_mm = 20;
-
-// What a label in one piece must keep clear of, found through grids so that a query costs what is
-// near it, not the whole piece.
-struct PieceObstacles {
-  std::vector<Segment> lines;
-  std::vector<Polygon> labels;
-  std::vector<bool> label_active;  // retracted labels stay in the grid, switched off
-  BoxGrid line_grid, label_grid, triangle_grid;
-  explicit PieceObstacles(const Box2& region)
-      : line_grid(region, kGridCell_mm),
-        label_grid(region, kGridCell_mm),
-        triangle_grid(region, kGridCell_mm) {}
-};
 
 Box2 piece_region(const ScaledPiece& piece) {
   Box2 b;
@@ -78,6 +60,15 @@ double label_width_mm(const std::string& text, double height_mm, const LabelOpti
   return digits * options.char_width * height_mm;
 }
 
+double label_descent_mm(const std::string& text, double height_mm) {
+  // Below the baseline: DejaVu Sans "p" 0.21 em (0.29 of its 0.73 em cap height), Hershey futural 7 of
+  // 21 units; brackets 0.13 em (0.18) and 4 of 21.
+  constexpr double kDescender = 0.34, kBracket = 0.2;
+  if (text.find('p') != std::string::npos) return kDescender * height_mm;
+  if (text.find_first_of("()") != std::string::npos) return kBracket * height_mm;
+  return 0;
+}
+
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams) {
   std::vector<int> seam_at_edge;
   for (std::size_t s = 0; s < seams.size(); ++s) {
@@ -99,223 +90,402 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
   return number;
 }
 
+namespace {
+
+// How far a label is from clear, in the order placement gives in: clear of every line and label;
+// across a fold line; touching the outline too; nowhere clear (on the edge's middle anyway).
+enum class Clearance { Clear, OverFold, OverOutline, Nowhere };
+
+// What a label says, most informative first: the full text (with the mate's sheet) or the short one,
+// each with the step mark or without it.
+struct Form {
+  bool full_text = true;
+  bool with_hint = true;
+};
+constexpr std::array<Form, 4> kForms{{{true, true}, {true, false}, {false, true}, {false, false}}};
+
+// One side of a seam to label, and what it has got so far.
+struct SideTask {
+  int seam = -1, side = 0, piece = -1;
+  const OutlineEdge* edge = nullptr;
+  const Tab* tab = nullptr;  // the seam's tab when this side carries it
+  double length_mm = 0;
+  std::string full, brief;  // the texts it may print (equal when there is nothing to leave out)
+  double room_mm = 0;       // width left beside the label at the legible minimum: the smaller, the harder
+  std::optional<Label> label;
+  Clearance clearance = Clearance::Nowhere;
+  std::size_t form = kForms.size() - 1;
+  bool step_side = false;  // the side that shows the seam's step mark where it can (the one with the tab)
+  int slot = -1;           // the label's obstacle in its piece
+};
+
+// Places the labels in three rounds, so that no label takes the room another needs to be legible:
+// every label at the legible minimum clear of everything, the sides with the least room first; then the
+// ones left over across a fold line or, failing that, touching the outline; then each grows (its full
+// text, its step mark, a larger size) where the room allows.
+class LabelPlacer {
+ public:
+  LabelPlacer(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabPlan& tabs,
+              std::span<const std::vector<FoldLine>> fold_lines, std::span<const std::string> hints,
+              const LabelOptions& options, const SeamTexts& texts,
+              std::span<const std::vector<Polygon>> taken)
+      : pieces_(pieces), seams_(seams), hints_(hints), o_(options) {
+    build_obstacles(fold_lines, taken);
+    collect_sides(tabs, texts);
+  }
+
+  std::vector<Label> run() {
+    std::vector<std::size_t> hardest_first(sides_.size());
+    std::iota(hardest_first.begin(), hardest_first.end(), 0);
+    std::stable_sort(hardest_first.begin(), hardest_first.end(),
+                     [&](std::size_t a, std::size_t b) { return sides_[a].room_mm < sides_[b].room_mm; });
+    for (std::size_t i : hardest_first)
+      try_at_minimum(sides_[i], Clearance::Clear);
+    for (Clearance level : {Clearance::OverFold, Clearance::OverOutline})
+      for (std::size_t i : hardest_first)
+        if (!sides_[i].label) try_at_minimum(sides_[i], level);
+    for (SideTask& side : sides_)
+      if (!side.label) place_on_middle(side);
+    for (SideTask& side : sides_)
+      grow(side);
+    if (!hints_.empty()) show_every_step();
+    std::vector<Label> labels;
+    for (SideTask& side : sides_)
+      labels.push_back(std::move(*side.label));
+    return labels;
+  }
+
+ private:
+  struct Segment {
+    Vec2 a, b;
+    bool fold = false;  // fold lines may be crossed when nothing else is left; outlines never
+  };
+  // What a label in one piece must keep clear of, found through grids so that a query costs what is
+  // near it, not the whole piece.
+  struct PieceObstacles {
+    std::vector<Segment> lines;
+    std::vector<Polygon> labels;
+    std::vector<bool> label_active;  // moved labels stay in the grid, switched off
+    BoxGrid line_grid, label_grid, triangle_grid;
+    explicit PieceObstacles(const Box2& region)
+        : line_grid(region, kGridCell_mm),
+          label_grid(region, kGridCell_mm),
+          triangle_grid(region, kGridCell_mm) {}
+  };
+
+  void build_obstacles(std::span<const std::vector<FoldLine>> fold_lines,
+                       std::span<const std::vector<Polygon>> taken) {
+    obstacles_.reserve(pieces_.size());
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      obstacles_.emplace_back(piece_region(pieces_[p]));
+      PieceObstacles& ob = obstacles_.back();
+      auto add = [&](Vec2 a, Vec2 b, bool fold) {
+        Box2 box;
+        box.add(a);
+        box.add(b);
+        ob.line_grid.insert(static_cast<int>(ob.lines.size()), box);
+        ob.lines.push_back({a, b, fold});
+      };
+      for (const OutlineLoop& loop : pieces_[p].outline_mm)
+        for (const OutlineEdge& e : loop)
+          add(e.a, e.b, false);
+      if (p < fold_lines.size())
+        for (const FoldLine& f : fold_lines[p])
+          add(f.a, f.b, true);
+      for (std::size_t t = 0; t < pieces_[p].triangles_mm.size(); ++t)
+        ob.triangle_grid.insert(static_cast<int>(t), bounds_of(pieces_[p].triangles_mm[t]));
+      if (p < taken.size())
+        for (const Polygon& area : taken[p])
+          add_label_obstacle(static_cast<int>(p), area);
+    }
+  }
+
+  void collect_sides(const TabPlan& tabs, const SeamTexts& texts) {
+    for (std::size_t s = 0; s < seams_.size(); ++s) {
+      // A pointer into the plan (a conditional with nullopt would copy the tab into a temporary).
+      const Tab* tab = s < tabs.tab_of_seam.size() && tabs.tab_of_seam[s] ? &*tabs.tab_of_seam[s] : nullptr;
+      // The side with a tab first: its label has room there for the step mark.
+      const int first = tab && tab->side == 1 ? 1 : 0;
+      for (int k : {first, 1 - first}) {
+        const SeamSide& at = seams_[s].sides[k];
+        if (at.piece < 0) continue;
+        SideTask side;
+        side.seam = static_cast<int>(s);
+        side.side = k;
+        side.piece = at.piece;
+        side.edge = &pieces_[at.piece].outline_mm[at.loop][at.index];
+        side.length_mm = norm(side.edge->b - side.edge->a);
+        if (!(side.length_mm > 0)) continue;
+        if (tab && tab->side == k) side.tab = tab;
+        side.step_side = k == first;
+        side.full = texts.full[s][k];
+        side.brief = s < texts.brief.size() ? texts.brief[s][k] : side.full;
+        side.room_mm = face_room_mm(side, label_width_mm(side.brief, o_.min_mm, o_));
+        sides_.push_back(std::move(side));
+      }
+    }
+  }
+
+  // The width the side's face leaves beside a label of `width` at the minimum height: a triangle
+  // narrows linearly from the edge towards its apex.
+  double face_room_mm(const SideTask& side, double width) const {
+    const ScaledPiece& piece = pieces_[side.piece];
+    const auto k =
+        std::lower_bound(piece.faces.begin(), piece.faces.end(), side.edge->face) - piece.faces.begin();
+    if (k >= static_cast<std::ptrdiff_t>(piece.faces.size())) return 0;
+    const double height = 2 * std::fabs(signed_area(piece.triangles_mm[k])) / side.length_mm;
+    const double top = o_.gap_mm + o_.min_mm + o_.clearance_mm;
+    return side.length_mm * (1 - top / std::max(height, 1e-9)) - width;
+  }
+
+  const std::string& hint_of(const SideTask& side) const {
+    static const std::string none;
+    return static_cast<std::size_t>(side.seam) < hints_.size() ? hints_[side.seam] : none;
+  }
+  const std::string& text_of(const SideTask& side, const Form& f) const {
+    return f.full_text ? side.full : side.brief;
+  }
+  // Whether forms print the same (no step mark to leave out, no sheet to drop): each is tried once.
+  bool prints_alike(const SideTask& side, std::size_t a, std::size_t b) const {
+    const Form &f = kForms[a], &g = kForms[b];
+    const bool same_text = f.full_text == g.full_text || side.brief == side.full;
+    const bool same_hint = f.with_hint == g.with_hint || hint_of(side).empty();
+    return same_text && same_hint;
+  }
+  bool tried_before(const SideTask& side, std::span<const std::size_t> forms, std::size_t i) const {
+    for (std::size_t j = 0; j < i; ++j)
+      if (prints_alike(side, forms[i], forms[j])) return true;
+    return false;
+  }
+
+  double full_width(const SideTask& side, double h, const Form& f) const {
+    double w = label_width_mm(text_of(side, f), h, o_);
+    if (f.with_hint && !hint_of(side).empty()) w += 0.3 * h + label_width_mm(hint_of(side), 0.75 * h, o_);
+    return w;
+  }
+
+  // Largest first: a label as big as its edge allows is the easiest to find.
+  std::vector<double> heights_down_to(const SideTask& side, double lowest) const {
+    const double preferred = std::clamp(o_.per_length * side.length_mm, o_.min_mm, o_.max_mm);
+    std::vector<double> heights;
+    for (double h = preferred; h > lowest + 1e-9; h *= 0.85)
+      heights.push_back(h);
+    heights.push_back(lowest);
+    return heights;
+  }
+
+  // level Clear: clear of every line and label; OverFold: may cross fold lines; OverOutline: may touch
+  // the outline too, but never another label.
+  bool clear_of_everything(int p, const Polygon& box, Clearance level) const {
+    const Box2 reach = grown(bounds_of(box), o_.clearance_mm);
+    const PieceObstacles& ob = obstacles_[p];
+    if (level < Clearance::OverOutline) {
+      const bool clear_of_lines = ob.line_grid.visit(reach, [&](int i) {
+        const Segment& s = ob.lines[i];
+        if (level >= Clearance::OverFold && s.fold) return true;
+        const std::array<Vec2, 2> seg{s.a, s.b};
+        return !convex_overlap(box, seg, -o_.clearance_mm);
+      });
+      if (!clear_of_lines) return false;
+    }
+    return clear_of_labels(p, box);
+  }
+  bool clear_of_labels(int p, const Polygon& box) const {
+    const Box2 reach = grown(bounds_of(box), o_.clearance_mm);
+    const PieceObstacles& ob = obstacles_[p];
+    return ob.label_grid.visit(reach, [&](int k) {
+      return !ob.label_active[k] || !convex_overlap(box, ob.labels[k], -o_.clearance_mm);
+    });
+  }
+  bool inside_piece(int p, Vec2 point) const {
+    const Box2 at{point, point};
+    return !obstacles_[p].triangle_grid.visit(
+        at, [&](int t) { return !inside_convex(pieces_[p].triangles_mm[t], point, 0); });
+  }
+
+  Label make_label(const SideTask& side, Vec2 at, Vec2 dir, double h, const Form& f, bool on_tab) const {
+    Label label;
+    label.seam = side.seam;
+    label.side = side.side;
+    label.piece = side.piece;
+    label.text = text_of(side, f);
+    label.at_mm = at;
+    label.dir = dir;
+    label.height_mm = h;
+    label.on_tab = on_tab;
+    if (f.with_hint) label.hint = hint_of(side);
+    // The foot of the box is `at`; descenders ("p2") need room below the baseline.
+    const double descent = std::max(label_descent_mm(label.text, h), label_descent_mm(label.hint, 0.75 * h));
+    label.at_mm = at + perp_ccw(dir) * descent;
+    label.box_mm = label_box(at, dir, full_width(side, h, f), h + descent);
+    return label;
+  }
+
+  // On the tab: read from the outside, foot on the fold. The tab may cover only part of the edge, and
+  // its slanted ends leave most room at its middle: centred on its base first.
+  std::optional<Label> on_tab(const SideTask& side, double h, const Form& f) const {
+    const Tab& tab = *side.tab;
+    if (h > tab.width_mm - o_.gap_mm - o_.clearance_mm) return std::nullopt;
+    const Vec2 dir = normalized(side.edge->a - side.edge->b);
+    const Vec2 base_a = tab.quad_mm[3], base_b = tab.quad_mm[0];  // along dir
+    const double base = norm(base_b - base_a), w = full_width(side, h, f);
+    if (w > base) return std::nullopt;
+    for (double t : {0.5, 0.4, 0.6, 0.3, 0.7}) {
+      const Vec2 at = base_a + dir * (t * base - 0.5 * w) + perp_ccw(dir) * o_.gap_mm;
+      Label label = make_label(side, at, dir, h, f, true);
+      bool inside = true;
+      for (Vec2 c : label.box_mm)
+        inside = inside && inside_convex(tab.quad_mm, c, o_.clearance_mm * 0.5);
+      if (inside && clear_of_labels(side.piece, label.box_mm)) return label;
+    }
+    return std::nullopt;
+  }
+
+  // Inside the piece along the edge, foot towards it: slid along the edge and lifted off it.
+  std::optional<Label> on_face(const SideTask& side, double h, const Form& f, Clearance level) const {
+    static constexpr std::array<double, 11> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.12, 0.88, 0.06, 0.94};
+    const OutlineEdge& e = *side.edge;
+    const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
+    const double w = full_width(side, h, f);
+    // Lifted off the edge by up to a label's height (a small one a little more): farther, it would not
+    // read as the edge's.
+    const double highest = o_.gap_mm + (h <= 1.2 * o_.min_mm ? 1.5 : 0.9) * h;
+    for (double lift : {o_.gap_mm, o_.gap_mm + 0.4 * h, o_.gap_mm + 0.9 * h, highest})
+      for (double t : kAlong) {
+        const Vec2 at = e.a + dir * (t * side.length_mm - 0.5 * w) + up * lift;
+        const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
+        if (!inside_piece(side.piece, centre)) continue;
+        Label label = make_label(side, at, dir, h, f, false);
+        if (clear_of_everything(side.piece, label.box_mm, level)) return label;
+      }
+    return std::nullopt;
+  }
+
+  // On the tab where the side has one (the face keeps its room for the other labels), else on the face.
+  // A label that has its tab keeps it: it grows only there.
+  std::optional<Label> find(const SideTask& side, double h, const Form& f, Clearance level) const {
+    if (side.tab)
+      if (auto label = on_tab(side, h, f)) return label;
+    if (side.label && side.label->on_tab) return std::nullopt;
+    return on_face(side, h, f, level);
+  }
+
+  void add_label_obstacle(int p, const Polygon& box) {
+    PieceObstacles& ob = obstacles_[p];
+    ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(box));
+    ob.labels.push_back(box);
+    ob.label_active.push_back(true);
+  }
+
+  void commit(SideTask& side, Label label, Clearance level, std::size_t form) {
+    if (side.slot >= 0) obstacles_[side.piece].label_active[side.slot] = false;
+    label.over_fold = level == Clearance::OverFold && !label.on_tab;
+    label.crowded = level >= Clearance::OverOutline && !label.on_tab;
+    side.clearance = label.on_tab ? Clearance::Clear : level;
+    side.form = form;
+    side.slot = static_cast<int>(obstacles_[side.piece].labels.size());
+    add_label_obstacle(side.piece, label.box_mm);
+    side.label = std::move(label);
+  }
+
+  // The short text first, everywhere: the mate's sheet, like a larger size, comes where room is left
+  // over (grow), and the sheets list their parts. The step mark too, except on the seam's first side:
+  // one side at least shows it if it fits there at all.
+  void try_at_minimum(SideTask& side, Clearance level) {
+    const bool step_first = level == Clearance::Clear && side.step_side && !hint_of(side).empty();
+    const std::vector<std::size_t> forms =
+        step_first ? std::vector<std::size_t>{2, 3} : std::vector<std::size_t>{3};
+    for (std::size_t i = 0; i < forms.size(); ++i) {
+      if (tried_before(side, forms, i)) continue;
+      if (auto label = find(side, o_.min_mm, kForms[forms[i]], level)) {
+        commit(side, std::move(*label), level, forms[i]);
+        return;
+      }
+    }
+  }
+
+  void place_on_middle(SideTask& side) {
+    const OutlineEdge& e = *side.edge;
+    const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
+    const Form brief{false, false};
+    const double w = full_width(side, o_.min_mm, brief);
+    const Vec2 at = 0.5 * (e.a + e.b) - dir * (0.5 * w) + up * o_.gap_mm;
+    commit(side, make_label(side, at, dir, o_.min_mm, brief, false), Clearance::Nowhere, kForms.size() - 1);
+  }
+
+  // A more informative form (the full text, the step mark) where the room allows, then a larger size;
+  // only for labels clear of every line (one that crosses a line would cross more).
+  void grow(SideTask& side) {
+    if (side.clearance != Clearance::Clear) return;
+    const int own = side.slot;
+    obstacles_[side.piece].label_active[own] = false;
+    std::optional<Label> better;
+    std::size_t better_form = side.form;
+    for (std::size_t form = 0; form <= side.form && !better; ++form) {
+      if (form != side.form && prints_alike(side, form, side.form)) continue;
+      const double current = side.label->height_mm;
+      for (double h : heights_down_to(side, o_.min_mm)) {
+        if (form == side.form && h <= current + 1e-9) break;
+        if ((better = find(side, h, kForms[form], Clearance::Clear))) {
+          better_form = form;
+          break;
+        }
+      }
+    }
+    obstacles_[side.piece].label_active[own] = true;
+    if (better) commit(side, std::move(*better), side.clearance, better_form);
+  }
+
+  // A seam whose step mark found room on neither side shows it anyway on the side that suffers least,
+  // across a fold line if need be (never touching the outline or a label): the builder asked for it.
+  void show_every_step() {
+    std::vector<std::vector<std::size_t>> sides_of(seams_.size());
+    for (std::size_t i = 0; i < sides_.size(); ++i)
+      sides_of[sides_[i].seam].push_back(i);
+    for (const std::vector<std::size_t>& seam_sides : sides_of) {
+      bool shown = seam_sides.empty() || hint_of(sides_[seam_sides.front()]).empty();
+      for (std::size_t i : seam_sides)
+        shown = shown || !sides_[i].label->hint.empty();
+      for (std::size_t i : seam_sides) {
+        if (shown) break;
+        SideTask& side = sides_[i];
+        if (side.clearance > Clearance::OverFold) continue;
+        const int own = side.slot;
+        obstacles_[side.piece].label_active[own] = false;
+        std::optional<Label> with_step = find(side, o_.min_mm, kForms[2], Clearance::OverFold);
+        const bool clear =
+            with_step &&
+            (with_step->on_tab || clear_of_everything(side.piece, with_step->box_mm, Clearance::Clear));
+        obstacles_[side.piece].label_active[own] = true;
+        if (!with_step) continue;
+        const Clearance level = clear ? Clearance::Clear : Clearance::OverFold;
+        commit(side, std::move(*with_step), level, 2);
+        shown = true;
+      }
+    }
+  }
+
+  std::span<const ScaledPiece> pieces_;
+  std::span<const Seam> seams_;
+  std::span<const std::string> hints_;
+  const LabelOptions& o_;
+  std::vector<PieceObstacles> obstacles_;
+  std::vector<SideTask> sides_;
+};
+
+}  // namespace
+
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& o,
-                                std::span<const std::array<std::string, 2>> texts,
-                                std::span<const std::vector<Polygon>> taken) {
-  std::vector<PieceObstacles> obstacles;
-  obstacles.reserve(pieces.size());
-  for (std::size_t p = 0; p < pieces.size(); ++p) {
-    obstacles.emplace_back(piece_region(pieces[p]));
-    PieceObstacles& ob = obstacles.back();
-    auto add = [&](Vec2 a, Vec2 b, bool fold) {
-      Box2 box;
-      box.add(a);
-      box.add(b);
-      ob.line_grid.insert(static_cast<int>(ob.lines.size()), box);
-      ob.lines.push_back({a, b, box, fold});
-    };
-    for (const OutlineLoop& loop : pieces[p].outline_mm)
-      for (const OutlineEdge& e : loop)
-        add(e.a, e.b, false);
-    if (p < fold_lines.size())
-      for (const FoldLine& f : fold_lines[p])
-        add(f.a, f.b, true);
-    for (std::size_t t = 0; t < pieces[p].triangles_mm.size(); ++t)
-      ob.triangle_grid.insert(static_cast<int>(t), bounds_of(pieces[p].triangles_mm[t]));
-    if (p < taken.size())
-      for (const Polygon& area : taken[p]) {
-        ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(area));
-        ob.labels.push_back(area);
-        ob.label_active.push_back(true);
-      }
-  }
-
-  // level 0: clear of every line and label; 1: may cross fold lines; 2: may touch the outline too.
-  auto clear_of_everything = [&](int p, const Polygon& box, int level) {
-    const Box2 reach = grown(bounds_of(box), o.clearance_mm);
-    const PieceObstacles& ob = obstacles[p];
-    if (level < 2) {
-      const bool clear_of_lines = ob.line_grid.visit(reach, [&](int i) {
-        const Segment& s = ob.lines[i];
-        if (level >= 1 && s.fold) return true;
-        const std::array<Vec2, 2> seg{s.a, s.b};
-        return !convex_overlap(box, seg, -o.clearance_mm);
-      });
-      if (!clear_of_lines) return false;
-    }
-    return ob.label_grid.visit(reach, [&](int k) {
-      return !ob.label_active[k] || !convex_overlap(box, ob.labels[k], -o.clearance_mm);
-    });
-  };
-  auto inside_piece = [&](int p, Vec2 point) {
-    const Box2 at{point, point};
-    return !obstacles[p].triangle_grid.visit(
-        at, [&](int t) { return !inside_convex(pieces[p].triangles_mm[t], point, 0); });
-  };
-
-  std::vector<Label> labels;
-  for (std::size_t s = 0; s < seams.size(); ++s) {
-    const std::string number = number_text(numbers[s]);
-    const std::string hint = s < hints.size() ? hints[s] : std::string();
-    // The side with a tab first: its label has room there for the hint. The hint may be dropped on a
-    // crowded side, but every seam keeps its step on one side at least.
-    const auto& seam_tab = tabs.tab_of_seam.size() > s ? tabs.tab_of_seam[s] : std::nullopt;
-    const int first = seam_tab && seam_tab->side == 1 ? 1 : 0;
-    auto place = [&](int k, bool may_drop_hint) -> std::optional<Label> {
-      const SeamSide& side = seams[s].sides[k];
-      if (side.piece < 0) return std::nullopt;
-      const OutlineEdge& e = pieces[side.piece].outline_mm[side.loop][side.index];
-      const double length = norm(e.b - e.a);
-      if (length <= 0) return std::nullopt;
-      Label label;
-      label.seam = static_cast<int>(s);
-      label.side = k;
-      label.piece = side.piece;
-      const std::string& text = s < texts.size() ? texts[s][k] : number;
-      label.text = text;
-      label.hint = hint;
-      // With an assembly hint, the hint goes first when the side is crowded: the step is also in the
-      // assembly list, and a number clear of every line matters more.
-      auto full_width = [&](double h, bool with_hint) {
-        double w = label_width_mm(text, h, o);
-        if (with_hint && !hint.empty()) w += 0.3 * h + label_width_mm(hint, 0.75 * h, o);
-        return w;
-      };
-      std::vector<bool> hint_choices{true};
-      if (may_drop_hint) hint_choices.push_back(false);
-      const double preferred = std::clamp(o.per_length * length, o.min_mm, o.max_mm);
-      // Largest first: a label as big as its edge allows is the easiest to find.
-      std::vector<double> heights;
-      for (double h = preferred; h > o.min_mm + 1e-9; h *= 0.85)
-        heights.push_back(h);
-      heights.push_back(o.min_mm);
-      bool placed = false;
-
-      const auto& tab = tabs.tab_of_seam.size() > s ? tabs.tab_of_seam[s] : std::nullopt;
-      if (tab && tab->side == k) {
-        // On the tab: read from the outside, foot on the edge.
-        // The tab may cover only part of the edge: centre on its base.
-        const Vec2 dir = normalized(e.a - e.b);
-        const Vec2 mid = 0.5 * (tab->quad_mm[0] + tab->quad_mm[3]);
-        const double tallest = tab->width_mm - o.gap_mm - o.clearance_mm;
-        for (bool with_hint : hint_choices)
-          for (double h : heights) {
-            if (h > tallest || placed) continue;
-            const double w = full_width(h, with_hint);
-            const Vec2 at = mid - dir * (0.5 * w) + perp_ccw(dir) * o.gap_mm;
-            Polygon box = label_box(at, dir, w, h);
-            bool inside = true;
-            for (Vec2 c : box)
-              inside = inside && inside_convex(tab->quad_mm, c, o.clearance_mm * 0.5);
-            if (!inside) continue;
-            label = Label{label.seam, k, side.piece, text,  at,
-                          dir,        h, true,       false, with_hint ? hint : std::string(),
-                          box};
-            placed = true;
-          }
-      }
-      if (!placed) {
-        const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
-        static constexpr std::array<double, 9> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.12, 0.88};
-        // Clear of every line first (with the hint, then without it); then, rather than shrink below the
-        // legible minimum or pile onto another label, across a fold line; then touching the outline.
-        struct Try {
-          int level;
-          bool with_hint;
-        };
-        std::vector<Try> tries{{0, true}};
-        if (may_drop_hint) tries.push_back({0, false});
-        const bool hint_last = !may_drop_hint;
-        tries.push_back({1, hint_last});
-        tries.push_back({2, hint_last});
-        for (const Try& attempt : tries) {
-          const int level = attempt.level;
-          for (double h : heights) {
-            if (placed) break;
-            const double w = full_width(h, attempt.with_hint);
-            for (double lift : {o.gap_mm, o.gap_mm + 0.4 * h, o.gap_mm + 0.9 * h}) {
-              for (double t : kAlong) {
-                const Vec2 at = e.a + dir * (t * length - 0.5 * w) + up * lift;
-                Polygon box = label_box(at, dir, w, h);
-                const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
-                if (!inside_piece(side.piece, centre) || !clear_of_everything(side.piece, box, level))
-                  continue;
-                label = Label{label.seam, k, side.piece, text,  at,
-                              dir,        h, false,      false, attempt.with_hint ? hint : std::string(),
-                              box};
-                label.over_fold = level == 1;
-                label.crowded = level == 2;
-                placed = true;
-                break;
-              }
-              if (placed) break;
-            }
-          }
-        }
-        if (!placed) {
-          const double h = o.min_mm, w = full_width(h, hint_last);
-          const Vec2 at = 0.5 * (e.a + e.b) - dir * (0.5 * w) + up * o.gap_mm;
-          label = Label{label.seam,
-                        k,
-                        side.piece,
-                        text,
-                        at,
-                        dir,
-                        h,
-                        false,
-                        true,
-                        hint_last ? hint : std::string(),
-                        label_box(at, dir, w, h)};
-        }
-      }
-      return label;
-    };
-    // How far a label is from clear: on the tab or clear of every line, across a fold, touching.
-    auto cost = [](const std::optional<Label>& l) { return !l ? 0 : l->crowded ? 2 : l->over_fold ? 1 : 0; };
-    auto shows_hint = [](const std::optional<Label>& l) { return l && !l->hint.empty(); };
-    auto commit = [&](const std::optional<Label>& l) {
-      if (!l) return;
-      PieceObstacles& ob = obstacles[l->piece];
-      ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(l->box_mm));
-      ob.labels.push_back(l->box_mm);
-      ob.label_active.push_back(true);
-      labels.push_back(*l);
-    };
-    auto retract = [&](const std::optional<Label>& l) {
-      if (!l) return;
-      // The grid cannot forget an item: the retracted label is switched off instead.
-      obstacles[l->piece].label_active[obstacles[l->piece].labels.size() - 1] = false;
-      labels.pop_back();
-    };
-    const int second = 1 - first;
-    std::optional<Label> a = place(first, !hint.empty());
-    commit(a);
-    std::optional<Label> b = place(second, !hint.empty() && shows_hint(a));
-    if (!hint.empty() && !shows_hint(a) && cost(b) > 0) {
-      // The first side dropped the step and the second is crowded with it: keep the step on whichever
-      // side suffers least from it (crossing a fold line is fine), or, when a number would touch the
-      // outline or another label either way, on neither (the assembly list still has it).
-      std::optional<Label> b_free = place(second, true);
-      retract(a);
-      std::optional<Label> a2 = place(first, false);
-      commit(a2);
-      std::optional<Label> b2 = place(second, true);
-      const int with_a = cost(a) + cost(b), with_a2 = cost(a2) + cost(b2), with_none = cost(a) + cost(b_free);
-      if (with_a2 < with_a && with_a2 <= with_none) {
-        a = std::move(a2);
-        b = std::move(b2);
-      } else {
-        retract(a2);
-        commit(a);
-        if (std::min(with_a, with_a2) >= 2 && with_none < std::min(with_a, with_a2)) b = std::move(b_free);
-      }
-    }
-    commit(b);
-  }
-  return labels;
+                                const SeamTexts& texts, std::span<const std::vector<Polygon>> taken) {
+  if (texts.full.size() >= seams.size())
+    return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken).run();
+  SeamTexts numbers_only;
+  for (int n : numbers)
+    numbers_only.full.push_back({number_text(n), number_text(n)});
+  return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, numbers_only, taken).run();
 }
 
 }  // namespace foldkit::layout

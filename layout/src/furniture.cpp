@@ -1,9 +1,11 @@
 #include "foldkit/layout/furniture.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
 #include "foldkit/layout/edge_numbers.hpp"
+#include "foldkit/layout/label_text.hpp"
 #include "foldkit/layout/polygon.hpp"
 
 namespace foldkit::layout {
@@ -103,6 +105,27 @@ void add_bar(Sheet& sheet, Vec2 left) {
   add_line(sheet, {left + Vec2{kBar_mm, -1.5}, left + Vec2{kBar_mm, 1.5}});
 }
 
+// The parts the sheet holds, by their letters, runs as ranges ("parts A-D, G"): a label whose mate is
+// part G says where G is even where it had no room for the sheet number. "" when the sheet has none.
+std::string parts_line(const Sheet& sheet) {
+  std::vector<int> ranks;
+  for (const Text& t : sheet.texts)
+    if (t.role == PathRole::Piece && letter_rank(t.text) >= 0) ranks.push_back(letter_rank(t.text));
+  std::sort(ranks.begin(), ranks.end());
+  ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+  std::string line;
+  for (std::size_t i = 0; i < ranks.size();) {
+    std::size_t j = i;
+    while (j + 1 < ranks.size() && ranks[j + 1] == ranks[j] + 1)
+      ++j;
+    line += (line.empty() ? "" : ", ") + piece_letter(ranks[i]);
+    if (j > i) line += (j == i + 1 ? ", " : "-") + piece_letter(ranks[j]);
+    i = j + 1;
+  }
+  if (line.empty()) return line;
+  return (ranks.size() == 1 ? "part " : "parts ") + line;
+}
+
 std::string title(std::size_t k, std::size_t n, const std::string& name) {
   std::string t = std::to_string(k + 1) + "/" + std::to_string(n);
   if (!name.empty()) t.append("  ").append(name);
@@ -123,10 +146,12 @@ std::vector<int> add_sheet_furniture(std::span<Sheet> sheets, std::span<const Bo
     Sheet& sheet = sheets[k];
     const Occupied occupied = occupied_on(sheet, keep_out);
     const std::string heading = title(k, sheets.size(), options.model_name);
+    const std::string parts = parts_line(sheet);
     if (const std::optional<Box2> block = free_block(sheet, occupied, options.spacing_mm)) {
       const Vec2 o = block->min + Vec2{1, 0};
       add_text(sheet, heading, o + Vec2{0, options.text_mm}, options.text_mm);
-      add_text(sheet, "50 mm", o + Vec2{0.5 * kBar_mm - 4, 10}, kSmallText_mm);
+      if (!parts.empty()) add_text(sheet, parts, o + Vec2{0, 7.2}, kSmallText_mm);
+      add_text(sheet, "50 mm", o + Vec2{0.5 * kBar_mm - 4, 10.5}, kSmallText_mm);
       add_bar(sheet, o + Vec2{0, 13});
       const Vec2 sq = o + Vec2{0, 17};
       add_line(sheet, {sq, sq + Vec2{kInch_mm, 0}, sq + Vec2{kInch_mm, kInch_mm}, sq + Vec2{0, kInch_mm}},
@@ -148,9 +173,12 @@ std::vector<int> add_sheet_furniture(std::span<Sheet> sheets, std::span<const Bo
       if (z.max.y > sheet.printable_mm.max.y && z.min.x <= x + 1e-9)
         x = std::max(x, z.max.x + options.spacing_mm);
     add_text(sheet, heading, {x, base}, options.text_mm);
+    const double parts_x = x + label_width_mm(heading, options.text_mm, LabelOptions{}) + 4;
     const double bar_x = sheet.printable_mm.max.x - kBar_mm;
     add_bar(sheet, {bar_x, base - 0.5 * options.text_mm});
     add_text(sheet, "50 mm", {bar_x - 12, base}, kSmallText_mm);
+    if (!parts.empty() && parts_x + label_width_mm(parts, kSmallText_mm, LabelOptions{}) < bar_x - 14)
+      add_text(sheet, parts, {parts_x, base}, kSmallText_mm);
   }
   return without_room;
 }

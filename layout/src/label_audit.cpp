@@ -30,9 +30,11 @@ Polygon text_box(const Text& text) {
                        : label_width_mm(text.text, text.height_mm, LabelOptions{});
   const Vec2 dir{std::cos(text.angle_rad), std::sin(text.angle_rad)};  // page frame, y down
   const Vec2 up{dir.y, -dir.x};                                        // where glyphs grow on the page
-  const Vec2 a = text.at_mm;
-  Polygon box{up_frame(a), up_frame(a + dir * w), up_frame(a + dir * w + up * text.height_mm),
-              up_frame(a + up * text.height_mm)};
+  // From below the descenders ("p2") to the cap height.
+  const double descent = text.role == PathRole::Piece ? 0 : label_descent_mm(text.text, text.height_mm);
+  const Vec2 a = text.at_mm - up * descent;
+  const double h = text.height_mm + descent;
+  Polygon box{up_frame(a), up_frame(a + dir * w), up_frame(a + dir * w + up * h), up_frame(a + up * h)};
   if (signed_area(box) < 0) std::swap(box[1], box[3]);
   return box;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numeric>
 #include <span>
 
@@ -67,22 +68,25 @@ struct Draft {
   std::vector<std::vector<Polygon>> label_taken;  // per piece: the part letter's footprint
 };
 
-// What each side of each seam prints: the mate's letter when it is another part, and the mate's sheet
-// (1-based) when `sheet_of_piece` is given and puts the mate on another sheet than the side.
-std::vector<std::array<std::string, 2>> seam_texts(const Draft& d, std::span<const int> sheet_of_piece = {}) {
-  std::vector<std::array<std::string, 2>> texts(d.seams.size());
+// What each side of each seam prints: the mate's letter when it is another part, and in the full text
+// the mate's sheet (1-based) when `sheet_of_piece` is given and puts the mate on another sheet.
+SeamTexts seam_texts(const Draft& d, std::span<const int> sheet_of_piece = {}) {
+  SeamTexts texts;
+  texts.full.resize(d.seams.size());
+  texts.brief.resize(d.seams.size());
   for (std::size_t s = 0; s < d.seams.size(); ++s)
     for (int k = 0; k < 2; ++k) {
       const int own = d.seams[s].sides[k].piece, mate = d.seams[s].sides[1 - k].piece;
       const bool other = mate >= 0 && own >= 0 && mate != own;
       const bool elsewhere = other && !sheet_of_piece.empty() && sheet_of_piece[mate] != sheet_of_piece[own];
-      texts[s][k] = seam_label_text(d.numbers[s], other ? d.letters[mate] : "",
-                                    elsewhere ? sheet_of_piece[mate] + 1 : 0);
+      const std::string& letter = other ? d.letters[mate] : std::string();
+      texts.full[s][k] = seam_label_text(d.numbers[s], letter, elsewhere ? sheet_of_piece[mate] + 1 : 0);
+      texts.brief[s][k] = seam_label_text(d.numbers[s], letter, 0);
     }
   return texts;
 }
 
-std::vector<Label> place_draft_labels(const Draft& d, std::span<const std::array<std::string, 2>> texts) {
+std::vector<Label> place_draft_labels(const Draft& d, const SeamTexts& texts) {
   return place_labels(d.pieces, d.seams, d.numbers, d.tabs, d.label_avoid, d.hints, d.label_options, texts,
                       d.label_taken);
 }
@@ -146,7 +150,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
     // Arrows sit along the edges: lift the labels above them.
     if (o.arrows) label_options.gap_mm = 1.6;
     // The sheets are not known yet: the labels are placed without the mate's sheet, and placed again
-    // where packing puts a mate on another sheet (relabel_for_sheets).
+    // where packing puts a mate on another sheet (settle_labels).
     d.labels = place_draft_labels(d, seam_texts(d));
   }
   return d;
@@ -227,8 +231,12 @@ std::vector<Text> upright_label_texts(const Label& label, const std::string& tex
   Vec2 start = label.at_mm + label.dir * lead;
   Vec2 dir = label.dir;
   if (turn) {
-    // Read from the box's other end, glyphs growing towards the edge: the same rectangle.
-    start = label.at_mm + label.dir * (lead + total) + up * h;
+    // Read from the box's other end, glyphs growing towards the edge, descenders away from it: the same
+    // rectangle, from the descent below the baseline (at_mm) to the cap height.
+    const double box_height =
+        label.box_mm.size() >= 4 ? norm(label.box_mm[3] - label.box_mm[0]) : label.height_mm;
+    const double descent = box_height - label.height_mm;
+    start = label.at_mm + label.dir * (lead + total) + up * (h - descent);
     dir = -1.0 * label.dir;
   }
   std::vector<Text> out{make_text(text, start, dir, h, PathRole::Label, label.piece, t, paper_h)};
@@ -287,32 +295,76 @@ std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
   return blocks;
 }
 
-// Places the labels again with the mate's sheet where packing put a mate on another sheet ("B12 p2").
-// Packing kept room for the first labels that stick out of tiny faces, so a piece takes its new labels
-// only when every one that sticks out stays inside the packed shape; otherwise it keeps the first ones,
-// and the longer texts shrink into their boxes when printed.
-void relabel_for_sheets(Draft& d, std::span<const PackItem> items, const PackResult& packed) {
-  if (d.labels.empty()) return;
+// Without a glue order, parts are lettered in sheet order (A, B, C on sheet 1, D, E on sheet 2), so
+// that the part list on each sheet says where a mate is even where a label has no room for "p2". Only
+// while every letter is one character: then letters swap without changing any label's width class.
+void letter_by_sheet(Draft& d, const LayoutOptions& o, std::span<const int> sheet_of_piece) {
+  const int count = static_cast<int>(d.pieces.size());
+  if (o.hints || count < 2 || piece_letter(count - 1).size() > 1) return;
+  std::vector<int> by_sheet(d.pieces.size());
+  std::iota(by_sheet.begin(), by_sheet.end(), 0);
+  std::stable_sort(by_sheet.begin(), by_sheet.end(),
+                   [&](int a, int b) { return sheet_of_piece[a] < sheet_of_piece[b]; });
+  for (int r = 0; r < count; ++r) {
+    d.letters[by_sheet[r]] = piece_letter(r);
+    if (static_cast<std::size_t>(by_sheet[r]) < d.piece_letters.size())
+      d.piece_letters[by_sheet[r]].text = d.letters[by_sheet[r]];
+  }
+}
+
+// Once packing has put the parts on sheets: letters in sheet order, and the labels placed again with
+// the mate's sheet where it is another ("B12 p2"). Packing kept room for the first labels that stick
+// out of tiny faces, so a piece takes its new labels only when every one that sticks out stays inside
+// the packed shape; otherwise it keeps the first ones with their texts brought up to date (shrunk into
+// their boxes when printed, should a letter be wider).
+void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> items,
+                   const PackResult& packed) {
   std::vector<int> sheet_of_piece;
   for (std::size_t p = 0; p < d.pieces.size(); ++p)
     sheet_of_piece.push_back(packed.placements[p].sheet);
-  const std::vector<std::array<std::string, 2>> texts = seam_texts(d, sheet_of_piece);
+  letter_by_sheet(d, o, sheet_of_piece);
+  if (d.labels.empty()) return;
+  const SeamTexts texts = seam_texts(d, sheet_of_piece);
   std::vector<bool> changed(d.pieces.size(), false);
   bool any = false;
   for (const Label& l : d.labels)
-    if (l.text != texts[l.seam][l.side]) changed[l.piece] = any = true;
+    if (l.text != texts.full[l.seam][l.side]) changed[l.piece] = any = true;
   if (!any) return;
   std::vector<Label> again = place_draft_labels(d, texts);
+  // A new label that sticks out where packing kept no room gives way to the first label of its side
+  // (packed, so inside the shape) when that one is clear of the piece's new labels; else the piece
+  // keeps all its first labels.
+  std::map<std::pair<int, int>, const Label*> first_of;
+  for (const Label& l : d.labels)
+    first_of[{l.seam, l.side}] = &l;
   std::vector<bool> take = changed;
-  for (const Label& l : again) {
-    if (!take[l.piece] || !l.crowded) continue;
-    const std::array<Polygon, 1> box{l.box_mm};
-    const double inside = intersection_area(box, items[l.piece].shape_mm);
-    if (inside < signed_area(l.box_mm) - 1e-6) take[l.piece] = false;
+  std::vector<std::vector<std::size_t>> again_of(d.pieces.size());
+  for (std::size_t i = 0; i < again.size(); ++i)
+    again_of[again[i].piece].push_back(i);
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    if (!take[p]) continue;
+    for (std::size_t i : again_of[p]) {
+      const Label& l = again[i];
+      const std::array<Polygon, 1> box{l.box_mm};
+      if (!l.crowded || intersection_area(box, items[p].shape_mm) >= signed_area(l.box_mm) - 1e-6) continue;
+      const Label* first = first_of[{l.seam, l.side}];
+      bool clear = first != nullptr;
+      for (std::size_t j : again_of[p])
+        clear = clear && (j == i || !convex_overlap(first->box_mm, again[j].box_mm, 0));
+      if (!clear) {
+        take[p] = false;
+        break;
+      }
+      again[i] = *first;
+      again[i].text = texts.brief[l.seam][l.side];
+    }
   }
   std::vector<Label> labels;
-  for (const Label& l : d.labels)
-    if (!take[l.piece]) labels.push_back(l);
+  for (Label& l : d.labels)
+    if (!take[l.piece]) {
+      l.text = texts.brief[l.seam][l.side];
+      labels.push_back(std::move(l));
+    }
   for (Label& l : again)
     if (take[l.piece]) labels.push_back(std::move(l));
   d.labels = std::move(labels);
@@ -407,7 +459,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   }
   attempt.complete = true;
   r.paper_height_mm = paper_h;
-  relabel_for_sheets(d, items, packed);
+  settle_labels(d, o, items, packed);
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
     const PackPlacement& place = packed.placements[p];
     r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});
@@ -492,12 +544,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     }
     for (int li : labels_of[p]) {
       const Label& label = d.labels[li];
-      const int mate = d.seams[label.seam].sides[1 - label.side].piece;
-      const int mate_sheet = mate >= 0 ? packed.placements[mate].sheet : place.sheet;
-      const std::string text =
-          seam_label_text(d.numbers[label.seam], mate >= 0 && mate != piece ? d.letters[mate] : "",
-                          mate_sheet != place.sheet ? mate_sheet + 1 : 0);
-      for (Text& out : upright_label_texts(label, text, t, paper_h))
+      for (Text& out : upright_label_texts(label, label.text, t, paper_h))
         sheet.texts.push_back(std::move(out));
       st.labels += 1;
       st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);

@@ -5,6 +5,7 @@
 // A foldkit::Error is an accepted outcome; a crash, sanitizer report, hang or other exception is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace foldkit::fuzz {
 /// The built-in device profiles that speak `protocol`.
 inline std::vector<devices::DeviceProfile> profiles_of(devices::Protocol protocol) {
   std::vector<devices::DeviceProfile> out;
-  for (auto& d : devices::load_profiles(devices::builtin_profiles_dir()).devices)
+  for (auto& d : devices::load_profiles(std::filesystem::path(FOLDKIT_SOURCE_DIR) / "profiles").devices)
     if (d.protocol == protocol) out.push_back(d);
   return out;
 }

@@ -6,14 +6,31 @@
 #include <atomic>
 #include <random>
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
+
+#include "foldkit/devices/install_paths.hpp"
 
 namespace foldkit::test {
 namespace fs = std::filesystem;
 
 fs::path source_dir() {
   return fs::path(FOLDKIT_SOURCE_DIR);
+}
+
+fs::path profiles_dir() {
+  return source_dir() / "profiles";
+}
+
+fs::path stroke_font_path() {
+  devices::InstallPaths paths;
+  paths.data_dirs = devices::xdg_data_dirs(std::getenv("XDG_DATA_DIRS"));
+  const std::vector<fs::path> candidates = devices::stroke_font_search_paths(paths, "futural");
+  for (const fs::path& p : candidates) {
+    if (fs::is_regular_file(p)) return p;
+  }
+  return candidates.front();
 }
 
 fs::path example_mesh(const std::string& name) {

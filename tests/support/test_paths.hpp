@@ -9,6 +9,11 @@ namespace foldkit::test {
 
 /// Root of the source tree (examples/, profiles/, tests/data/).
 std::filesystem::path source_dir();
+/// The project's built-in device and media profiles (profiles/ of the source tree).
+std::filesystem::path profiles_dir();
+/// The Hershey font "futural" of pen and DXF labels where this machine has it (hershey-fonts-data), else
+/// the first place it was looked for (so loading it fails with that path).
+std::filesystem::path stroke_font_path();
 /// The project's bundled example mesh `name` (e.g. "spot_350.obj") under examples/.
 std::filesystem::path example_mesh(const std::string& name);
 /// ../shared/meshes when the corpus is present, else nullopt (tests then GTEST_SKIP with a message).

@@ -158,13 +158,13 @@ struct ProfileSet {
   const MediaProfile& medium(const std::string& id) const;
 };
 
-/// The built-in profile directory: FOLDKIT_PROFILES_DIR from the build when it exists, else
-/// `profiles/` next to (or one level above) `executable`.
-std::filesystem::path builtin_profiles_dir(const std::filesystem::path& executable = {});
-
 /// Loads `dir`/devices/*.toml and `dir`/media/*.toml, then each of `extra_files` (a device or media
 /// profile, told apart by its `kind` key); a later profile with the same id replaces an earlier one.
+/// Where the built-in profiles are is install_paths.hpp's business (profile_dirs).
 ProfileSet load_profiles(const std::filesystem::path& dir,
+                         const std::vector<std::filesystem::path>& extra_files = {});
+/// As above for several folders, read in order (built-in first, then the user's own).
+ProfileSet load_profiles(const std::vector<std::filesystem::path>& dirs,
                          const std::vector<std::filesystem::path>& extra_files = {});
 
 /// Device coordinates (device units, in the order the device takes them) of page point `p_mm`, where

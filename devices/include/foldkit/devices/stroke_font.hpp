@@ -1,7 +1,8 @@
 #pragma once
 // Single-stroke text for pens on plotters and cutters: Hershey fonts in the .jhf format of Debian's
 // hershey-fonts-data. Outline fonts would be drawn as their outlines, twice per stroke; a Hershey
-// glyph is the centre line a pen follows once.
+// glyph is the centre line a pen follows once. Labels use "futural" (simplex sans), found by
+// install_paths.hpp's find_stroke_font.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -30,9 +31,6 @@ struct StrokeFont {
   /// The glyph for `code`, or nullptr when the font has none.
   const StrokeGlyph* glyph(char32_t code) const;
 };
-
-/// The font used when none is asked for: Hershey "futural" (simplex sans) from hershey-fonts-data.
-std::filesystem::path default_stroke_font_path();
 
 /// Reads a .jhf Hershey font (glyphs in file order from ASCII 32; records may continue over several
 /// lines). Throws InputError naming the file and line for a missing, empty or malformed file.

@@ -27,8 +27,8 @@ struct LabelOptions {
   double clearance_mm = 0.25;  ///< least distance from other lines and labels
 };
 
-/// A label in its piece's frame (mm, y up): text from `at_mm` along `dir`, glyphs growing towards
-/// perp_ccw(dir).
+/// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
+/// towards perp_ccw(dir); `box_mm` reaches from the descenders below the baseline to the cap height.
 struct Label {
   int seam = -1;
   int side = 0;
@@ -49,18 +49,31 @@ struct Label {
 /// neighbouring edges are close. Returns number per seam.
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams);
 
+/// What each side of each seam may print, per seam and side: `full` where it fits clear of every line
+/// and label (e.g. "B12 p3"), `brief` where only a shorter form does (e.g. "B12", when the sheets say
+/// which parts they hold); `brief` may be empty for "as full".
+struct SeamTexts {
+  std::vector<std::array<std::string, 2>> full, brief;
+};
+
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
-/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. `texts` (per
-/// seam and side, may be empty) is the longest text each side may print, e.g. "B12 p3"; without it a
-/// side prints number_text of its number. Obstacles are looked up through grids, so the time grows
-/// with the number of seams, not its square. `taken` (per piece, may be empty) are convex areas
-/// already used (part letters) that labels keep clear of like other labels.
+/// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. Without
+/// `texts` (empty) a side prints number_text of its number. Every label first gets a spot at the
+/// legible minimum (the sides with the least room first), then the full text, the hint and a larger
+/// size where the room allows. Obstacles are looked up through grids, so the time grows with the number
+/// of seams, not its square. `taken` (per piece, may be empty) are convex areas already used (part
+/// letters) that labels keep clear of like other labels.
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& options,
-                                std::span<const std::array<std::string, 2>> texts = {},
+                                const SeamTexts& texts = {},
                                 std::span<const std::vector<Polygon>> taken = {});
+
+/// How far the glyphs of `text` at cap height `height_mm` reach below the baseline: the descender of
+/// "p" (in "p2") and of brackets, about a third of the cap height in DejaVu Sans and Hershey futural;
+/// 0 for digits, capitals and periods. Label boxes reach that far below the foot.
+double label_descent_mm(const std::string& text, double height_mm);
 
 /// Length of `text` on the page at cap height `height_mm` under `options.char_width`.
 double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options);
