@@ -79,3 +79,32 @@ TEST(EdgeNumbers, ALabelInsideAPieceReadsAlongItsEdgeWithItsFootTowardsIt) {
     EXPECT_FALSE(l.crowded);
   }
 }
+
+TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClearOfEveryLine) {
+  // One needle triangle, 4 mm at its glued base, 30 mm tall: "12" at 2 mm (3.8 mm wide) does not fit
+  // along the base, 2.75 mm above it, where the face is 3.6 mm wide; across the base it does.
+  ScaledPiece piece;
+  piece.index = 0;
+  piece.faces = {0};
+  const Vec2 a{0, 0}, b{4, 0}, c{2, 30};
+  piece.triangles_mm = {Triangle2{a, b, c}};
+  piece.outline_mm = {{OutlineEdge{0, 0, 0, a, b}, OutlineEdge{1, 0, 1, b, c}, OutlineEdge{2, 0, 2, c, a}}};
+  piece.area_mm2 = 60;
+  Seam seam;
+  seam.edge = 0;
+  seam.sides = {SeamSide{0, 0, 0}, SeamSide{}};
+  const std::vector<ScaledPiece> pieces{piece};
+  const std::vector<Seam> seams{seam};
+  const std::vector<int> numbers{12};
+  LabelOptions o;
+  o.min_mm = 2;
+  const auto labels = place_labels(pieces, seams, numbers, TabPlan{}, {}, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_NEAR(dot(l.dir, Vec2{0, 1}), 1, 1e-9) << "reads away from the base, into the face";
+  EXPECT_FALSE(l.crowded);
+  EXPECT_FALSE(l.over_fold);
+  EXPECT_DOUBLE_EQ(l.height_mm, 2);
+  for (Vec2 corner : l.box_mm)
+    EXPECT_TRUE(inside_convex(piece.triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}

@@ -361,6 +361,24 @@ class LabelPlacer {
     return std::nullopt;
   }
 
+  // Across the edge, reading away from it into the face: where the face is a needle on a short edge,
+  // the only way a label fits clear of its lines. Tried after every spot along the edge.
+  std::optional<Label> across_face(const SideTask& side, double h, const Form& f, Clearance level) const {
+    static constexpr std::array<double, 5> kAt{0.5, 0.35, 0.65, 0.2, 0.8};
+    const OutlineEdge& e = *side.edge;
+    const Vec2 dir = normalized(e.b - e.a), into = perp_ccw(dir);
+    const double w = full_width(side, h, f);
+    for (double t : kAt) {
+      // Glyphs grow towards perp_ccw(into) = -dir: the foot at +h/2 puts the text astride the point.
+      const Vec2 at = e.a + dir * (t * side.length_mm + 0.5 * h) + into * o_.gap_mm;
+      const Vec2 centre = at + into * (0.5 * w) - dir * (0.5 * h);
+      if (!inside_piece(side.piece, centre)) continue;
+      Label label = make_label(side, at, into, h, f, false);
+      if (clear_of_everything(side.piece, label.box_mm, level)) return label;
+    }
+    return std::nullopt;
+  }
+
   // On the tab where the side has one (the face keeps its room for the other labels), else on the face.
   // A label that has its tab keeps it: it grows only there.
   std::optional<Label> find(const SideTask& side, double h, const Form& f, Clearance level) const {
@@ -402,6 +420,9 @@ class LabelPlacer {
         return;
       }
     }
+    if (level != Clearance::Clear) return;
+    if (auto label = across_face(side, o_.min_mm, kForms[3], level))
+      commit(side, std::move(*label), level, 3);
   }
 
   void place_on_middle(SideTask& side) {

@@ -1,119 +1,210 @@
-// Closing slits by tree moves. A move adds fold edge e at the slit vertex to the cuts and folds a cut
-// edge a on the cycle this makes in the cut graph: in the dual, the side of e is cut off and glued back
-// along a. Only the four end vertices of e and a change their cut count, so the change in slits is
-// known before the (costly) overlap test, and only moves that lower it are tested.
+// Closing slits by tree moves. A move cuts fold edge e and folds cut edge a: in the dual, the side of e
+// is cut off and glued back along a, one rigid motion. Only the seams between that side and the rest
+// of its piece move relative to each other, so a move's effect on the slits is known from those few
+// seams before the (costly) overlap test, and only moves that lower the slits' cost are tested.
 #include "foldkit/unfold/slits.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <optional>
-
-#include "foldkit/unfold/curvature.hpp"
 
 namespace foldkit::unfold {
 namespace {
 
-bool slit_at(const CutTree& tree, const std::vector<double>& defect, int v, int cuts, double limit) {
-  return cuts == 1 && tree.context().required_cuts[v] >= 1 && defect[v] < limit;
+// Moves must lower the total slit cost by at least this: no walking in circles on rounding.
+constexpr double kMinGain = 1e-3;
+
+// A rigid motion of the plane (rotation by (c, s) about `from`, then translation to `to`).
+struct Motion {
+  double c = 1, s = 0;
+  Vec2 from, to;
+  Vec2 operator()(Vec2 p) const {
+    const Vec2 d = p - from;
+    return {to.x + c * d.x - s * d.y, to.y + s * d.x + c * d.y};
+  }
+};
+
+Vec2 corner_of(const CutTree& tree, int f, int v) {
+  const auto& face = tree.mesh().faces[f];
+  const Triangle2& t = tree.flat(f);
+  for (int i = 0; i < 3; ++i)
+    if (face[i] == v) return t[i];
+  return t[0];
+}
+
+// The motion that takes face `moving`'s copy of edge e onto face `fixed`'s (as CutTree glues them).
+Motion glue_motion(const CutTree& tree, int e, int moving, int fixed) {
+  const auto& v = tree.mesh().edges[e].v;
+  const Vec2 p0 = corner_of(tree, moving, v[0]), p1 = corner_of(tree, moving, v[1]);
+  const Vec2 q0 = corner_of(tree, fixed, v[0]), q1 = corner_of(tree, fixed, v[1]);
+  const Vec2 dp = p1 - p0, dq = q1 - q0;
+  Motion m;
+  const double n = norm(dp) * norm(dq);
+  if (n > 0) {
+    m.c = dot(dp, dq) / n;
+    m.s = cross(dp, dq) / n;
+  }
+  m.from = (p0 + p1) * 0.5;
+  m.to = (q0 + q1) * 0.5;
+  return m;
+}
+
+// Gap per length of cut edge e between face `moved` (placed by `motion`) and face `other`.
+double gap_per_length(const CutTree& tree, int e, int moved, const Motion& motion, int other) {
+  const auto& v = tree.mesh().edges[e].v;
+  const Vec2 a0 = motion(corner_of(tree, moved, v[0])), a1 = motion(corner_of(tree, moved, v[1]));
+  const Vec2 b0 = corner_of(tree, other, v[0]), b1 = corner_of(tree, other, v[1]);
+  const double length = norm(b1 - b0);
+  if (length <= 0) return std::numeric_limits<double>::infinity();
+  return std::max(norm(a0 - b0), norm(a1 - b1)) / length;
+}
+
+// What a slit costs: 1, plus up to 1 more the tighter it is (a wider slit is progress: from there it
+// may close).
+double slit_cost(double gap, double limit) {
+  return gap < limit ? 2 - gap / limit : 0;
 }
 
 struct Move {
-  int gain = 0;  // slits closed (positive is better)
+  double gain = 0;  // cost removed (positive is better)
   int cut = -1, fold = -1;
 };
 
-// Slits the move (cut `e`, fold `a`) closes, or nothing when it breaks the curvature rule.
-std::optional<int> move_gain(const CutTree& tree, const std::vector<double>& defect, int e, int a,
-                             double limit) {
-  const Mesh& m = tree.mesh();
-  std::array<int, 4> vs{m.edges[e].v[0], m.edges[e].v[1], m.edges[a].v[0], m.edges[a].v[1]};
-  int gain = 0;
-  for (int i = 0; i < 4; ++i) {
-    const int v = vs[i];
-    if (std::find(vs.begin(), vs.begin() + i, v) != vs.begin() + i) continue;
-    const int before = tree.cut_count(v);
-    const int after = before + (v == vs[0] || v == vs[1]) - (v == vs[2] || v == vs[3]);
-    if (after < tree.context().required_cuts[v]) return std::nullopt;
-    gain += slit_at(tree, defect, v, before, limit) - slit_at(tree, defect, v, after, limit);
+class Closer {
+ public:
+  Closer(CutTree& tree, const EdgeConstraints& cons, const SlitOptions& options)
+      : tree_(tree), m_(tree.mesh()), cons_(cons), limit_(options.min_gap_per_length) {
+    edges_at_.resize(m_.num_vertices());
+    for (int e = 0; e < m_.num_edges(); ++e)
+      for (int v : m_.edges[e].v)
+        edges_at_[v].push_back(e);
   }
-  return gain;
-}
+
+  double cost(int e) const { return slit_cost(seam_gap_per_length(tree_, e), limit_); }
+
+  // The best move that makes slit c cheaper: over the fold edges at its ends, the largest gain that
+  // adds no overlap. Nothing when out of time.
+  template <class OutOfTime>
+  Move best_move(int c, const OutOfTime& out_of_time) {
+    Move best;
+    for (int v : m_.edges[c].v)
+      for (int e : edges_at_[v]) {
+        if (!tree_.folded(e) || cons_.fold(e)) continue;
+        if (!try_cut(e, best, out_of_time)) return {};
+      }
+    return best;
+  }
+
+  void apply(const Move& move) {
+    tree_.smaller_side(move.cut, side_);
+    tree_.reattach(side_, move.cut, move.fold);
+  }
+
+ private:
+  // Candidate folds for cutting e: the cut edges between its smaller side and the rest of the piece.
+  // Improves `best` with the best of them; false when out of time.
+  template <class OutOfTime>
+  bool try_cut(int e, Move& best, const OutOfTime& out_of_time) {
+    tree_.smaller_side(e, side_);
+    boundary_.clear();
+    for (int x : side_)
+      for (int a : m_.face_edges[x]) {
+        if (a == e || tree_.folded(a) || m_.edges[a].boundary()) continue;
+        const int y = tree_.across(a, x);
+        if (!tree_.in_side(y) && tree_.piece(y) == tree_.piece(x)) boundary_.push_back({a, x, y});
+      }
+    double before = 0;
+    for (const Link& l : boundary_)
+      before += cost(l.edge);
+    candidates_.clear();
+    for (const Link& l : boundary_) {
+      if (cons_.cut(l.edge) || !curvature_allows(e, l.edge)) continue;
+      const Motion motion = glue_motion(tree_, l.edge, l.inside, l.outside);
+      // After the move: e is a seam, l.edge is folded, the other links moved with the side.
+      const auto& ef = m_.edges[e].face;
+      const int e_in = tree_.in_side(ef[0]) ? ef[0] : ef[1], e_out = e_in == ef[0] ? ef[1] : ef[0];
+      double after = slit_cost(gap_per_length(tree_, e, e_in, motion, e_out), limit_);
+      for (const Link& o : boundary_)
+        if (o.edge != l.edge)
+          after += slit_cost(gap_per_length(tree_, o.edge, o.inside, motion, o.outside), limit_);
+      const double gain = before - after;
+      if (gain > best.gain + kMinGain) candidates_.push_back({gain, e, l.edge});
+    }
+    std::stable_sort(candidates_.begin(), candidates_.end(),
+                     [](const Move& p, const Move& q) { return p.gain > q.gain; });
+    for (const Move& c : candidates_) {
+      if (out_of_time()) return false;
+      if (tree_.reattach_cost(side_, c.fold, 0) == 0) {
+        best = c;
+        break;
+      }
+    }
+    return true;
+  }
+
+  // Cutting e and folding a keeps every vertex at the cut count its curvature needs.
+  bool curvature_allows(int e, int a) const {
+    for (int v : m_.edges[a].v) {
+      const auto& ev = m_.edges[e].v;
+      const int after = tree_.cut_count(v) - 1 + (v == ev[0] || v == ev[1]);
+      if (after < tree_.context().required_cuts[v]) return false;
+    }
+    return true;
+  }
+
+  struct Link {
+    int edge, inside, outside;  // a cut edge between the side (face `inside`) and the rest
+  };
+  CutTree& tree_;
+  const Mesh& m_;
+  const EdgeConstraints& cons_;
+  double limit_;
+  std::vector<std::vector<int>> edges_at_;
+  std::vector<int> side_;
+  std::vector<Link> boundary_;
+  std::vector<Move> candidates_;
+};
 
 }  // namespace
 
-bool is_slit(const CutTree& tree, const std::vector<double>& defect_rad, int v, double min_leaf_defect_rad) {
-  return slit_at(tree, defect_rad, v, tree.cut_count(v), min_leaf_defect_rad);
+double seam_gap_per_length(const CutTree& tree, int e) {
+  const auto& edge = tree.mesh().edges[e];
+  if (edge.boundary() || tree.folded(e) || tree.piece(edge.face[0]) != tree.piece(edge.face[1]))
+    return std::numeric_limits<double>::infinity();
+  return gap_per_length(tree, e, edge.face[0], Motion{}, edge.face[1]);
 }
 
-int count_slits(const CutTree& tree, const std::vector<double>& defect_rad, double min_leaf_defect_rad) {
+int count_slits(const CutTree& tree, double min_gap_per_length) {
   int n = 0;
-  for (int v = 0; v < tree.mesh().num_vertices(); ++v)
-    n += is_slit(tree, defect_rad, v, min_leaf_defect_rad);
+  for (int e = 0; e < tree.mesh().num_edges(); ++e)
+    n += seam_gap_per_length(tree, e) < min_gap_per_length;
   return n;
 }
 
-SlitResult close_slits(CutTree& tree, const EdgeConstraints& cons, const SlitOptions& options) {
+SlitResult close_slits(CutTree& tree, const EdgeConstraints& constraints, const SlitOptions& options) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto out_of_time = [&] {
     return std::chrono::duration<double>(Clock::now() - start).count() >= options.time_limit_s;
   };
-  const Mesh& m = tree.mesh();
-  const double limit = options.min_leaf_defect_rad;
-  const std::vector<double> defect = angle_defects(m);
-  std::vector<std::vector<int>> edges_at(m.num_vertices());
-  for (int e = 0; e < m.num_edges(); ++e)
-    for (int v : m.edges[e].v)
-      edges_at[v].push_back(e);
-
+  Closer closer(tree, constraints, options);
   SlitResult result;
-  result.slits_before = count_slits(tree, defect, limit);
-  std::vector<int> side;
-  std::vector<Move> candidates;
-  bool stopped = false;
-  for (int pass = 0; pass < options.max_passes && !stopped; ++pass) {
+  result.slits_before = count_slits(tree, options.min_gap_per_length);
+  for (int pass = 0; pass < options.max_passes && !out_of_time(); ++pass) {
     int moves_this_pass = 0;
-    for (int v = 0; v < m.num_vertices() && !stopped; ++v) {
-      if (!is_slit(tree, defect, v, limit)) continue;
-      // The best move over every fold edge at v: the largest gain, then the first found.
-      Move best;
-      for (int e : edges_at[v]) {
-        if (!tree.folded(e) || cons.fold(e)) continue;
-        tree.smaller_side(e, side);
-        candidates.clear();
-        for (int x : side)
-          for (int a : m.face_edges[x]) {
-            if (a == e || tree.folded(a) || m.edges[a].boundary() || cons.cut(a)) continue;
-            const int y = tree.across(a, x);
-            if (tree.in_side(y) || tree.piece(y) != tree.piece(x)) continue;
-            const std::optional<int> gain = move_gain(tree, defect, e, a, limit);
-            if (gain && *gain > best.gain) candidates.push_back({*gain, e, a});
-          }
-        std::stable_sort(candidates.begin(), candidates.end(),
-                         [](const Move& p, const Move& q) { return p.gain > q.gain; });
-        for (const Move& c : candidates) {
-          if (c.gain <= best.gain) break;
-          if (out_of_time()) {
-            stopped = true;
-            break;
-          }
-          if (tree.reattach_cost(side, c.fold, 0) == 0) {
-            best = c;
-            break;
-          }
-        }
-        if (stopped) break;
-      }
-      if (best.cut < 0) continue;
-      tree.smaller_side(best.cut, side);
-      tree.reattach(side, best.cut, best.fold);
+    for (int c = 0; c < tree.mesh().num_edges() && !out_of_time(); ++c) {
+      if (closer.cost(c) <= 0) continue;
+      const Move move = closer.best_move(c, out_of_time);
+      if (move.cut < 0) continue;
+      closer.apply(move);
       ++result.moves;
       ++moves_this_pass;
     }
     if (moves_this_pass == 0) break;
   }
-  result.slits_after = count_slits(tree, defect, limit);
+  result.slits_after = count_slits(tree, options.min_gap_per_length);
   return result;
 }
 

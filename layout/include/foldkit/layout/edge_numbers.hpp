@@ -2,7 +2,8 @@
 // Matching edge numbers: every seam pair gets a unique number, written on both of its sides: inside
 // the piece along the edge, or on the tab when the side has one. Labels are sized to their edge
 // (never below a legible minimum), keep clear of outline and fold lines and of each other, and read
-// with their foot towards the edge they name.
+// with their foot towards the edge they name (or, on a needle face too narrow along its short edge,
+// across it, starting at the edge).
 #include <array>
 #include <span>
 #include <string>

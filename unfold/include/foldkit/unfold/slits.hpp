@@ -1,11 +1,10 @@
 #pragma once
-// Slits: cut-tree leaves at vertices with little angle defect. At a leaf the two sides of its one cut
-// edge meet at an angle equal to the vertex's defect, so where the surface is nearly flat there the
-// net has a narrow slit with no room for a glue tab on either side. On a 1,000-face mesh the average
-// defect is about a degree and most leaves are slits. Moving the cuts so that the cut path runs on
-// through such a vertex (two cut edges there: the free angles sum to 2 pi plus the defect) closes the
-// slit; the leaves left are at the cone points (nose, ears, tips), where the wedge is wide.
-#include <cstdint>
+// Slits: glued seams whose two sides lie against each other in one piece, so that no glue tab fits on
+// either side. The common one is a cut-tree leaf at a nearly flat vertex: its two sides meet there at
+// an angle equal to the vertex's defect, about a degree on a 1,000-face mesh. A cut path through flat
+// vertices whose branch beyond turns by almost nothing makes a longer one, both sides touching along
+// several edges. Moving the cuts (cut a fold edge at the slit, fold a cut edge of the cycle that makes)
+// closes them; the leaves left are at the cone points (nose, ears, tips), where the wedge is wide.
 #include <vector>
 
 #include "foldkit/unfold/cut_tree.hpp"
@@ -14,9 +13,10 @@
 namespace foldkit::unfold {
 
 struct SlitOptions {
-  /// A leaf whose vertex's defect is below this is a slit. About 30 degrees leaves a wedge in which a
-  /// tab of a third of its edge's length fits (its slants within the wedge).
-  double min_leaf_defect_rad = 30.0 * 3.14159265358979323846 / 180.0;
+  /// A seam within one piece is a slit when the two copies of each of its ends are closer than this
+  /// fraction of its length: the far end of a leaf's wedge then opens by less than about 30 degrees,
+  /// too little for a tab a third of the edge wide whose slants stay in the wedge.
+  double min_gap_per_length = 0.5;
   /// Passes over the slits; each pass tries every slit once and stops early when nothing improved.
   int max_passes = 6;
   /// Wall-clock budget; the tree is overlap-free after every move, so stopping early is safe.
@@ -29,17 +29,18 @@ struct SlitResult {
   int moves = 0;
 };
 
-/// True when vertex v is a slit of `tree`: exactly one cut edge there and a defect below the limit.
-bool is_slit(const CutTree& tree, const std::vector<double>& defect_rad, int v, double min_leaf_defect_rad);
+/// How far apart the two sides of cut edge e lie, relative to its length: the larger of the distances
+/// between the two copies of each end. Infinite for a boundary edge, a fold or a seam between pieces.
+double seam_gap_per_length(const CutTree& tree, int e);
 
-/// Number of slits of `tree`.
-int count_slits(const CutTree& tree, const std::vector<double>& defect_rad, double min_leaf_defect_rad);
+/// Number of slits of `tree` (seams whose gap per length is below `min_gap_per_length`).
+int count_slits(const CutTree& tree, double min_gap_per_length);
 
-/// Closes slits of `tree` (overlap-free on entry, and after every move): for a slit vertex, cuts one of
-/// its fold edges and folds instead a cut edge on the cycle that makes, moving the cut-off side rigidly,
-/// when that lowers the number of slits and adds no overlap. The number of pieces does not change;
-/// forced cuts and folds are honoured; the curvature rule (cut edges a vertex needs) is kept.
-/// Deterministic unless stopped by the time limit.
+/// Closes slits of `tree` (overlap-free on entry, and after every move): cuts a fold edge at an end of a
+/// slit and folds instead a cut edge on the cycle that makes, moving the cut-off side rigidly, when that
+/// lowers the slits' total cost (each slit costs more the tighter it is) and adds no overlap. The number
+/// of pieces does not change; forced cuts and folds are honoured; the curvature rule (cut edges a vertex
+/// needs) is kept. Deterministic unless stopped by the time limit.
 SlitResult close_slits(CutTree& tree, const EdgeConstraints& constraints, const SlitOptions& options);
 
 }  // namespace foldkit::unfold
