@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <regex>
@@ -30,6 +31,7 @@ struct Row {
   long sheets = 0, bound = 0;
   int parts = 0, seams = 0, no_tab = 0;
   double coverage = 0, seconds = 0;
+  double cpu_seconds = 0;  ///< process CPU time: the machine may be shared, the wall clock then lies
 };
 
 std::vector<fs::path> mesh_files(const fs::path& corpus) {
@@ -47,10 +49,15 @@ std::vector<fs::path> mesh_files(const fs::path& corpus) {
 Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout::LayoutOptions o) {
   Row row;
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  auto stop = [&] {
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    row.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  };
   try {
     const ChosenParts parts = choose_parts(mesh, unfolding, o);
     const layout::LayoutResult r = parts.layout ? *parts.layout : layout::layout_sheets(parts.unfolding, o);
-    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stop();
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
@@ -61,7 +68,7 @@ Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout
     row.coverage = r.overall.coverage;
   } catch (const Error& e) {
     row.error = e.what();
-    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stop();
   }
   return row;
 }
@@ -84,9 +91,9 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (!a.json_out)
     std::printf(
         "foldkit bench --layout: %s, %d-%d faces, %s, search unfolding (seed 1)\n%-28s %5s %5s | %6s %5s %5s "
-        "%8s %7s %7s\n",
+        "%8s %7s %7s %7s\n",
         corpus.string().c_str(), a.min_faces, a.max_faces, a.paper.c_str(), "mesh", "faces", "size", "sheets",
-        "bound", "parts", "coverage", "no tab", "s");
+        "bound", "parts", "coverage", "no tab", "s", "cpu s");
   for (const fs::path& file : mesh_files(corpus)) {
     if (!a.filter.empty() && file.filename().string().find(a.filter) == std::string::npos) continue;
     unfold::LoadedMesh loaded;
@@ -105,6 +112,7 @@ void run_layout_bench(const LayoutBenchArgs& a) {
       layout::LayoutOptions o;
       o.paper_mm = *paper;
       o.size_mm = size;
+      if (a.nest2d) o.packer = layout::PackEngine::Nest2d;
       Row row = run_one(loaded.mesh, unfolded.unfolding, o);
       row.mesh = name;
       row.faces = loaded.mesh.num_faces();
@@ -113,9 +121,9 @@ void run_layout_bench(const LayoutBenchArgs& a) {
         if (!row.error.empty())
           std::printf("%-28s %5d %5.0f | error: %s\n", name.c_str(), row.faces, size, row.error.c_str());
         else
-          std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f\n", name.c_str(), row.faces,
-                      size, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab, row.seams,
-                      row.seconds);
+          std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", name.c_str(),
+                      row.faces, size, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab,
+                      row.seams, row.seconds, row.cpu_seconds);
         std::fflush(stdout);
       }
       rows.push_back(std::move(row));
@@ -123,7 +131,7 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   }
 
   long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0, over = 0;
-  double seconds = 0;
+  double seconds = 0, cpu_seconds = 0;
   std::vector<double> coverage;
   for (const Row& r : rows) {
     if (!r.error.empty()) continue;
@@ -131,6 +139,7 @@ void run_layout_bench(const LayoutBenchArgs& a) {
     bound += r.bound;
     over += r.sheets > r.bound + 1;
     seconds += r.seconds;
+    cpu_seconds += r.cpu_seconds;
     coverage.push_back(r.coverage);
     if (r.size_mm == 150 && r.faces >= 350 && r.faces <= 1000) {
       mid_seams += r.seams;
@@ -142,7 +151,11 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (a.json_out) {
     json out{{"rows", json::array()}};
     for (const Row& r : rows) {
-      json j{{"mesh", r.mesh}, {"faces", r.faces}, {"size_mm", r.size_mm}, {"seconds", r.seconds}};
+      json j{{"mesh", r.mesh},
+             {"faces", r.faces},
+             {"size_mm", r.size_mm},
+             {"seconds", r.seconds},
+             {"cpu_seconds", r.cpu_seconds}};
       if (!r.error.empty()) {
         j["error"] = r.error;
       } else {
@@ -161,7 +174,8 @@ void run_layout_bench(const LayoutBenchArgs& a) {
                      {"runs_more_than_one_over", over},
                      {"median_coverage", median(coverage)},
                      {"no_tab_share_350_1000_at_150mm", share},
-                     {"seconds", seconds}};
+                     {"seconds", seconds},
+                     {"cpu_seconds", cpu_seconds}};
     std::cout << out.dump(2) << "\n";
     return;
   }
@@ -171,8 +185,8 @@ void run_layout_bench(const LayoutBenchArgs& a) {
                   mid_seams, 100 * share);
   std::printf(
       "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
-      "%.0f%%, seams without a tab %s, layout %.1f s\n",
-      sheets, bound, ratio, over, 100 * median(coverage), no_tab, seconds);
+      "%.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
+      sheets, bound, ratio, over, 100 * median(coverage), no_tab, seconds, cpu_seconds);
 }
 
 }  // namespace foldkit::cli

@@ -15,6 +15,7 @@ struct LayoutBenchArgs {
   std::string filter;
   double time_limit_s = 60;  ///< for the unfolding of each mesh
   bool json_out = false;
+  bool nest2d = false;  ///< pack with libnest2d instead of the raster packer (the comparison)
 };
 
 /// Runs the layout benchmark and prints the table (or JSON) on stdout. Throws InputError when the corpus

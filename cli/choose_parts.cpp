@@ -4,8 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
+#include <vector>
 
+#include "foldkit/geom/hull.hpp"
 #include "foldkit/unfold/parts.hpp"
 
 namespace foldkit::cli {
@@ -16,12 +19,76 @@ long sheets_with_pieces(const layout::LayoutResult& r) {
                        [](const layout::SheetStats& s) { return s.pieces > 0; });
 }
 
+// Sum of the parts' convex hull areas (model units squared): for the same faces, smaller is rounder.
+double hull_area(const unfold::Unfolding& u) {
+  double total = 0;
+  for (const std::vector<int>& faces : u.piece_faces()) {
+    std::vector<Vec2> points;
+    for (int f : faces)
+      points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
+    const std::vector<Vec2> hull = convex_hull(std::move(points));
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      total += 0.5 * cross(hull[i], hull[(i + 1) % hull.size()]);
+  }
+  return total;
+}
+
 struct Candidate {
   unfold::PartsResult parts;
-  layout::LayoutResult layout;
-  long sheets = 0;
-  double used_mm2 = 0;
+  long sheets = 0;  ///< by the estimate until `layout` is set, then by the layout
+  double hull_area = 0;
+  std::optional<layout::LayoutResult> layout;
+
+  // Fewer sheets, then fewer parts, then more compact parts.
+  auto rank() const { return std::make_tuple(sheets, parts.unfolding.piece_count, hull_area); }
 };
+
+// The layout that judges candidates cheaply: the same parts, tabs and packing, without the labels and
+// part letters, which cost as much as the rest and rarely change the sheet count. Where they do (a
+// crowded label sticking out of a small face), the full layout of the best candidates below sees it.
+layout::LayoutOptions estimate_options(layout::LayoutOptions o) {
+  o.numbers = false;
+  o.piece_letters = false;
+  o.arrows = false;
+  o.furniture = false;
+  return o;
+}
+
+// Parts and packing together: when the layout leaves more sheets than the area needs, the parts
+// alone on the last sheet are cut smaller (half, then a third of the room) and the whole is packed
+// again; smaller, rounder parts slip into the gaps of the sheets before. Kept when that saves a sheet.
+template <class Estimate, class LayOut>
+void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, unfold::PartOptions po,
+                        long bound, Estimate& estimate, LayOut& lay_out, Candidate& best) {
+  constexpr double kFractions[] = {0.5, 0.35};
+  constexpr int kFewMoreParts = 4;
+  for (std::size_t t = 0; t < std::size(kFractions); ++t) {
+    if (best.sheets <= bound || !best.layout) return;
+    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
+    po.also_split.clear();
+    int last = 0;
+    for (const layout::PiecePlacement& placement : best.layout->placements)
+      last = std::max(last, placement.sheet);
+    for (std::size_t p = 0; p < best.layout->placements.size(); ++p)
+      if (best.layout->placements[p].sheet == last) po.also_split.push_back(static_cast<int>(p));
+    po.room_fraction = kFractions[t];
+    po.growth = unfold::PartGrowth::Round;
+    Candidate c;
+    c.parts = unfold::split_into_parts(mesh, best.parts.unfolding, po);
+    c.parts.split_pieces = best.parts.split_pieces;
+    c.hull_area = hull_area(c.parts.unfolding);
+    // A sheet is worth a few more parts, not a model in confetti.
+    const int most_parts =
+        best.parts.unfolding.piece_count + std::max(kFewMoreParts, best.parts.unfolding.piece_count / 4);
+    if (c.parts.unfolding.piece_count > most_parts ||
+        c.parts.unfolding.piece_count == best.parts.unfolding.piece_count)
+      continue;
+    estimate(c);
+    if (c.sheets >= best.sheets) continue;
+    lay_out(c);
+    if (c.rank() < best.rank()) best = std::move(c);
+  }
+}
 
 }  // namespace
 
@@ -31,52 +98,90 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   unfold::PartOptions po;
   po.room_mm = layout::piece_room_mm(o);
   po.mm_per_unit = *o.size_mm / u.model_extent;
+  const layout::LayoutOptions rough = estimate_options(o);
 
-  auto evaluate = [&](double fraction, unfold::PartGrowth growth) {
+  auto make = [&](double fraction, unfold::PartGrowth growth) {
     po.room_fraction = fraction;
     po.growth = growth;
-    // Judged by a full layout: a crowded label can stick out of a small face and take room.
-    Candidate c{unfold::split_into_parts(mesh, u, po), {}, 0, 0};
-    c.layout = layout::layout_sheets(c.parts.unfolding, o);
-    c.sheets = sheets_with_pieces(c.layout);
-    c.used_mm2 = c.layout.overall.piece_area_mm2 + c.layout.overall.tab_area_mm2;
+    Candidate c;
+    c.parts = unfold::split_into_parts(mesh, u, po);
+    c.hull_area = hull_area(c.parts.unfolding);
     return c;
   };
+  auto lay_out = [&](Candidate& c) {
+    c.layout = layout::layout_sheets(c.parts.unfolding, o);
+    c.sheets = sheets_with_pieces(*c.layout);
+  };
   using Clock = std::chrono::steady_clock;
-  const auto first_start = Clock::now();
-  Candidate best = evaluate(1.0, unfold::PartGrowth::Tree);
-  const auto trial_time = Clock::now() - first_start;
-  if (best.parts.split_pieces == 0) return {std::move(best.parts.unfolding), 0, 0, std::move(best.layout)};
+  Candidate first = make(1.0, unfold::PartGrowth::Tree);
+  if (first.parts.split_pieces == 0) {
+    lay_out(first);
+    return {std::move(first.parts.unfolding), 0, 0, std::move(first.layout)};
+  }
 
   // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack
   // poorly; smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged
-  // by packing it: fewer sheets first, then fewer parts.
-  auto better = [](const Candidate& a, const Candidate& b) {
-    return std::make_pair(a.sheets, a.parts.unfolding.piece_count) <
-           std::make_pair(b.sheets, b.parts.unfolding.piece_count);
+  // by packing it (the estimate), fewer sheets first, then fewer parts, then rounder parts.
+  auto estimate = [&](Candidate& c) {
+    const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, rough);
+    c.sheets = sheets_with_pieces(r);
+    return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   };
+  const auto first_start = Clock::now();
+  const double used_mm2 = estimate(first);
+  const auto trial_time = Clock::now() - first_start;
   // No partition needs fewer sheets than its area: reaching that bound ends the trials.
   const Box2 area = layout::printable_area(o);
   const long bound =
-      std::max(1L, static_cast<long>(std::ceil(best.used_mm2 / (area.width() * area.height()) - 1e-9)));
+      std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
+
+  std::vector<Candidate> candidates;
+  candidates.push_back(std::move(first));
   const std::pair<double, unfold::PartGrowth> tries[] = {
       {1.0, unfold::PartGrowth::Round}, {0.7, unfold::PartGrowth::Tree},  {0.5, unfold::PartGrowth::Tree},
       {0.85, unfold::PartGrowth::Tree}, {0.7, unfold::PartGrowth::Round}, {0.5, unfold::PartGrowth::Round},
       {0.35, unfold::PartGrowth::Tree}};
-  // Large meshes try the first three only, so their layout stays fast; a count, not a clock, so the
-  // same input always gives the same parts.
+  // Large meshes try the first three only, with fewer full layouts and no re-split of the last
+  // sheet, so their layout stays fast; a count, not a clock, so the same input gives the same parts.
   constexpr int kManyFaces = 1500;
-  const std::size_t trials = mesh.num_faces() > kManyFaces ? 3 : std::size(tries);
+  const bool large = mesh.num_faces() > kManyFaces;
+  const std::size_t trials = large ? 3 : std::size(tries);
+  auto best_estimate = [&] {
+    return std::min_element(candidates.begin(), candidates.end(),
+                            [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
+  };
   for (std::size_t t = 0; t < trials; ++t) {
-    const auto [fraction, growth] = tries[t];
-    if (best.sheets <= bound) break;
-    // Under a time limit, another trial must leave room for the final layout (with labels, dearer).
-    if (o.deadline && Clock::now() + 3 * trial_time > *o.deadline) break;
-    Candidate c = evaluate(fraction, growth);
-    if (better(c, best)) best = std::move(c);
+    if (best_estimate()->sheets <= bound) break;
+    // Under a time limit, another trial must leave room for the full layouts (with labels, dearer).
+    if (o.deadline && Clock::now() + 4 * trial_time > *o.deadline) break;
+    Candidate c = make(tries[t].first, tries[t].second);
+    estimate(c);
+    candidates.push_back(std::move(c));
   }
-  return {std::move(best.parts.unfolding), best.parts.split_pieces, best.parts.new_pieces,
-          std::move(best.layout)};
+
+  // The best estimate gets its full layout; while the next estimate could still beat the best full
+  // layout so far (the labels can cost a sheet), that one gets a full layout too (at most three in
+  // all, two for large meshes), and the best full layout wins.
+  const std::size_t full_layouts = large ? 2 : 3;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
+  lay_out(candidates[0]);
+  for (std::size_t k = 1; k < std::min(candidates.size(), full_layouts); ++k) {
+    // Parts do not change between estimate and layout: a candidate can win only on fewer sheets, or
+    // as many with fewer parts.
+    const Candidate& held = candidates[0];
+    const Candidate& next = candidates[k];
+    if (!(next.sheets < held.sheets || (next.sheets == held.sheets &&
+                                        next.parts.unfolding.piece_count < held.parts.unfolding.piece_count)))
+      break;
+    lay_out(candidates[k]);
+    if (candidates[k].rank() < candidates[0].rank()) std::swap(candidates[0], candidates[k]);
+  }
+  Candidate best = std::move(candidates[0]);
+  if (!large) resplit_last_sheet(mesh, o, po, bound, estimate, lay_out, best);
+  const int untouched = u.piece_count - best.parts.split_pieces;
+  return {std::move(best.parts.unfolding), best.parts.split_pieces,
+          best.parts.unfolding.piece_count - untouched, std::move(best.layout)};
 }
 
 }  // namespace foldkit::cli

@@ -1,8 +1,9 @@
 #pragma once
 // The stage above unfold and layout that picks the parts: when the model does not fit the sheet as
 // it unfolded, the unfolding is cut into parts that fit the printable room (unfold::split_into_parts),
-// a few candidate partitions are laid out, and the one with the fewest sheets (then fewest parts) is
-// kept with its layout. Neither unfold nor layout sees the other's result flow back.
+// a few candidate partitions are packed without labels (a cheap estimate), the best one or two get the
+// full layout, and the one with the fewest sheets (then fewest parts, then roundest) is kept with its
+// layout. Neither unfold nor layout sees the other's result flow back.
 #include <optional>
 
 #include "foldkit/layout/layout.hpp"

@@ -384,10 +384,12 @@ void setup_bench(CLI::App& app) {
   cmd->add_option("--sizes", *sizes, "With --layout: model sizes in mm (default 150 250)")
       ->delimiter(',')
       ->check(number_in(1, 10000, "mm"));
+  auto nest2d = std::make_shared<bool>(false);
+  cmd->add_flag("--nest2d", *nest2d, "With --layout: pack with libnest2d instead of foldkit's packer");
   // Internal: what each child process runs.
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");
-  cmd->callback([a, layout, sizes, cmd] {
+  cmd->callback([a, layout, sizes, nest2d, cmd] {
     if (!a->one.empty()) return run_one(*a);
     const fs::path corpus = corpus_folder(a->corpus);
     if (!*layout) return run_bench(*a, corpus);
@@ -398,6 +400,7 @@ void setup_bench(CLI::App& app) {
     l.filter = a->filter;
     if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
     l.json_out = a->json_out;
+    l.nest2d = *nest2d;
     if (!sizes->empty()) l.sizes_mm = *sizes;
     run_layout_bench(l);
   });

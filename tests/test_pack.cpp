@@ -131,3 +131,16 @@ TEST(Pack, RealPiecesPackWithoutOverlapAtHighCoverage) {
   expect_valid(items, r, o);
   EXPECT_GT(area / (r.sheet_count * 190.0 * 277.0), 0.3);
 }
+
+TEST(Pack, TheLibnest2dEngineKeepsItemsApartAndInsideTheArea) {
+  std::vector<PackItem> items;
+  for (int i = 0; i < 10; ++i)
+    items.push_back(rect(40 + i % 3 * 5, 30));
+  PackOptions o;
+  o.area_mm = {{10, 10}, {110, 110}};
+  o.engine = PackEngine::Nest2d;
+  const PackResult r = pack_items(items, o);
+  ASSERT_TRUE(r.unplaced.empty());
+  EXPECT_GE(r.sheet_count, 2);
+  expect_valid(items, r, o);
+}

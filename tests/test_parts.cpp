@@ -120,3 +120,26 @@ TEST(Parts, AFlatFaceLargerThanTheSheetIsRefusedNamingTheLargestSizeThatFits) {
     EXPECT_NE(what.find("the largest --size that fits is"), std::string::npos) << what;
   }
 }
+
+TEST(Parts, APieceAskedForIsCutSmallerEvenThoughItFitsAndTheOthersStayWhole) {
+  const auto& ex = test::unfolded_example("spot_350.obj", Method::Search);
+  const PartsResult first = split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, 160));
+  ASSERT_GT(first.unfolding.piece_count, 1);
+  PartOptions p = room_at(first.unfolding, 160, 0.5, PartGrowth::Round);
+  p.also_split = {0};
+  const PartsResult again = split_into_parts(ex.mesh, first.unfolding, p);
+  EXPECT_TRUE(check_unfolding(ex.mesh, again.unfolding).empty());
+  EXPECT_GT(again.unfolding.piece_count, first.unfolding.piece_count);
+  // Only piece 0's faces were cut: every other piece keeps all of its faces together.
+  const auto before = first.unfolding.piece_faces();
+  for (std::size_t piece = 1; piece < before.size(); ++piece)
+    for (int f : before[piece])
+      EXPECT_EQ(again.unfolding.piece_of_face[f], again.unfolding.piece_of_face[before[piece].front()]);
+  for (const auto& faces : again.unfolding.piece_faces())
+    if (first.unfolding.piece_of_face[faces.front()] == 0) {
+      std::vector<Vec2> points;
+      for (int f : faces)
+        points.insert(points.end(), again.unfolding.flat[f].begin(), again.unfolding.flat[f].end());
+      EXPECT_GE(fit_in_rect(points, p.room_mm * 0.5).scale, p.mm_per_unit * (1 - 1e-9));
+    }
+}

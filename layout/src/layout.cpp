@@ -439,6 +439,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   pack_options.spacing_mm = o.spacing_mm;
   pack_options.cell_mm = o.pack_cell_mm;
   pack_options.rotations = o.rotations;
+  pack_options.engine = o.packer;
   pack_options.max_sheets = max_sheets;
   pack_options.deadline = o.deadline;
   if (o.regmarks)

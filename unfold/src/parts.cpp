@@ -249,11 +249,15 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
     cut[e] = u.edges[e].cut ? 1 : 0;
   bool changed = false;
   std::vector<int> part(u.num_faces(), -1);
-  for (const std::vector<int>& faces : u.piece_faces()) {
+  const std::vector<std::vector<int>> pieces = u.piece_faces();
+  for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
+    const std::vector<int>& faces = pieces[piece];
     std::vector<Vec2> all;
     for (int f : faces)
       all.insert(all.end(), u.flat[f].begin(), u.flat[f].end());
-    if (whole.fits(all)) continue;
+    const bool asked =
+        std::find(o.also_split.begin(), o.also_split.end(), static_cast<int>(piece)) != o.also_split.end();
+    if (!asked && whole.fits(all)) continue;
     const Units units = units_of(u, flat_face, faces);
     check_flat_faces_fit(u, units, whole, o);
     result.split_pieces += 1;

@@ -10,6 +10,7 @@
 
 #include "foldkit/layout/folds.hpp"
 #include "foldkit/layout/label_audit.hpp"
+#include "foldkit/layout/pack.hpp"
 #include "foldkit/layout/regmarks.hpp"
 #include "foldkit/sheet/sheet.hpp"
 #include "foldkit/unfold/unfolding.hpp"
@@ -51,6 +52,7 @@ struct LayoutOptions {
   double spacing_mm = 2;      ///< least gap between pieces (with tabs) on a sheet
   int rotations = 8;          ///< evenly spaced rotations tried per piece when packing
   double pack_cell_mm = 0.5;  ///< packing raster resolution
+  PackEngine packer = PackEngine::Raster;
   /// When set, layout stops here with a LayoutError ("stopped at the time limit …").
   std::optional<std::chrono::steady_clock::time_point> deadline;
 };

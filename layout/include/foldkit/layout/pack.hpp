@@ -22,12 +22,20 @@ struct PackItem {
   bool rotate = true;  ///< false: only the item's own orientation (blocks of text)
 };
 
+/// Which packer: the raster bottom-left fill (below), or libnest2d's no-fit-polygon nester (compared on
+/// the layout benchmark; it nests convex hulls only, so it cannot use the bays of concave parts).
+enum class PackEngine { Raster, Nest2d };
+
 struct PackOptions {
+  PackEngine engine = PackEngine::Raster;
   Box2 area_mm{{0, 0}, {190, 277}};  ///< where items may go, sheet frame (mm, y up)
   std::vector<Box2> keep_out_mm;     ///< regions nothing may come within spacing_mm of
   double spacing_mm = 2;             ///< least gap between two items
   double cell_mm = 0.5;              ///< raster resolution: smaller packs tighter, costs more time
   int rotations = 8;                 ///< evenly spaced rotations tried (4: multiples of 90 degrees)
+  /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
+  /// needs (fewer for many items); 0: none.
+  int shaken_orders = 16;
   /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
   std::optional<int> max_sheets;
   /// When set, packing stops here with a LayoutError: no input makes it run unbounded.
@@ -49,5 +57,8 @@ struct PackResult {
 /// Packs `items` (largest first) onto as few sheets as the heuristic finds. Throws LayoutError when the
 /// deadline passes.
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options);
+
+/// The same with libnest2d (options.engine is ignored; keep-outs are not supported).
+PackResult pack_items_nest2d(std::span<const PackItem> items, const PackOptions& options);
 
 }  // namespace foldkit::layout

@@ -27,6 +27,9 @@ struct PartOptions {
   /// better when cut from a spindly net).
   double room_fraction = 1.0;
   PartGrowth growth = PartGrowth::Fewest;
+  /// Pieces to cut to the room scaled by room_fraction even though they fit the room whole (the parts
+  /// left alone on a last sheet, cut smaller to fill the gaps of the sheets before).
+  std::vector<int> also_split;
 };
 
 struct PartsResult {
