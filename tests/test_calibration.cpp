@@ -23,6 +23,7 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/calibration_page.hpp"
+#include "scoped_env.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -116,26 +117,7 @@ void expect_shifted(std::vector<std::vector<DevicePoint>> before, std::vector<st
   EXPECT_EQ(strokes_of(before), strokes_of(after));
 }
 
-// Sets an environment variable for the lifetime of the object (the CLI runs inherit it).
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      ::setenv(name_, old_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using foldkit::test::ScopedEnv;
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // understand, the subcommand or option the user most likely meant, one line, exit code 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "test_paths.hpp"
@@ -11,10 +12,7 @@ using foldkit::test::run_foldkit;
 namespace {
 
 std::size_t lines(const std::string& s) {
-  std::size_t n = 0;
-  for (char c : s)
-    n += c == '\n';
-  return n;
+  return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "foldkit/devices/install_paths.hpp"
 #include "foldkit/devices/profile.hpp"
 #include "foldkit/error.hpp"
+#include "scoped_env.hpp"
 #include "test_paths.hpp"
 
 namespace foldkit::devices {
@@ -51,24 +52,7 @@ struct FakeInstall {
   fs::path builtin() const { return prefix / "share" / "foldkit" / "profiles"; }
 };
 
-// Sets an environment variable for one test (the CLI under test inherits it), then restores it.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      ::setenv(name_, old_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using foldkit::test::ScopedEnv;
 
 TEST(ProfileDirs, AreTheInstalledProfilesBesideTheProgramThenTheUsersOwn) {
   const FakeInstall f;
