@@ -1,6 +1,6 @@
 #pragma once
 // Internal to unfold/: colour and texture coordinates as readers report them, turned into the soup's
-// per-polygon attributes and materials; texture images probed; glTF read through Assimp.
+// per-polygon attributes and materials; texture images probed; glTF read (gltf_reader).
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -37,10 +37,16 @@ void probe_texture(Material& material);
 std::optional<std::filesystem::path> obj_material_library(const std::string& obj_text,
                                                           const std::filesystem::path& obj_path);
 
-/// A .gltf (with its buffers and images beside it, or data: URIs) or .glb through Assimp: every mesh
-/// of every node under its node's transform, TEXCOORD_0, baseColorFactor and baseColorTexture. Files
-/// it refers to must be regular files of at most `max_file_bytes`. Throws InputError(name, ...).
-PolygonSoup read_gltf(const std::filesystem::path& path, const std::string& name,
-                      std::uintmax_t max_file_bytes, std::vector<std::string>& notes);
+/// What reading a glTF may cost.
+struct GltfLimits {
+  std::uintmax_t max_file_bytes = 0;  ///< per buffer or image file it refers to
+  int face_limit = 0;                 ///< triangles in all
+};
+
+/// A .gltf (`bytes`, with its buffers and images beside `path` or in data: URIs) or .glb: every mesh
+/// of the default scene under its node's transform, TEXCOORD_0, baseColorFactor and baseColorTexture.
+/// Throws InputError(name, ...) for anything malformed or over `limits`.
+PolygonSoup read_gltf(const std::string& bytes, const std::filesystem::path& path, const std::string& name,
+                      const GltfLimits& limits, std::vector<std::string>& notes);
 
 }  // namespace foldkit::unfold::detail

@@ -515,7 +515,7 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   // The first vertex number in the format's own face lists (glTF indices count from 0 too).
   out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
   if (gltf) {
-    soup = detail::read_gltf(path, name, options.max_file_bytes, reader_notes);
+    soup = detail::read_gltf(bytes, path, name, {options.max_file_bytes, options.face_limit}, reader_notes);
   } else if (ext == ".obj") {
     obj = check_obj_text(bytes, name, options.face_limit);
     out.file_seams = obj.seams;

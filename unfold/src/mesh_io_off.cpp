@@ -18,7 +18,6 @@ namespace {
 constexpr std::uint64_t kMinAsciiVertexBytes = 6;
 constexpr std::uint64_t kMinAsciiFaceBytes = 8;
 constexpr std::uint64_t kBinaryWordBytes = 4;
-constexpr std::uint64_t kMinBinaryVertexBytes = 3 * kBinaryWordBytes;
 constexpr std::uint64_t kMinBinaryFaceBytes = 5 * kBinaryWordBytes;
 // Geomview's binary OFF gives a face's colour as a component count and that many floats (RGBA at most).
 constexpr std::uint32_t kMaxBinaryColourComponents = 4;
