@@ -20,6 +20,7 @@
 #include "foldkit/layout/piece_letters.hpp"
 #include "foldkit/layout/scale.hpp"
 #include "foldkit/layout/tabs.hpp"
+#include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::layout {
 namespace {
@@ -371,30 +372,60 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
   d.labels = std::move(labels);
 }
 
+// The flat face each triangle belongs to (its root): no fold line crosses a flat face, so a label
+// beside one of its edges may use all of it, not only the triangle on that edge.
+std::vector<int> flat_face_roots(const unfold::Unfolding& u) {
+  unfold::DisjointSets sets(u.num_faces());
+  for (const unfold::UnfoldEdge& e : u.edges)
+    if (e.inside_face && !e.boundary()) sets.join(e.face[0], e.face[1]);
+  std::vector<int> root(static_cast<std::size_t>(u.num_faces()));
+  for (int f = 0; f < u.num_faces(); ++f)
+    root[static_cast<std::size_t>(f)] = sets.find(f);
+  return root;
+}
+
+// How far the flat face of `face` reaches from the line of edge `e` into the piece: the height of the
+// triangle on the edge for a triangle, the farthest corner of the polygon for a quad or n-gon.
+double flat_face_height_mm(const ScaledPiece& piece, const OutlineEdge& e, std::span<const int> root) {
+  const double length = norm(e.b - e.a);
+  const Vec2 up = perp_ccw((e.b - e.a) / length);
+  double height = 0;
+  for (std::size_t k = 0; k < piece.faces.size(); ++k) {
+    if (root[static_cast<std::size_t>(piece.faces[k])] != root[static_cast<std::size_t>(e.face)]) continue;
+    for (Vec2 c : piece.triangles_mm[k])
+      height = std::max(height, dot(c - e.a, up));
+  }
+  return height;
+}
+
 // How much larger the model must be for the labels that found no clear spot to find one: per label,
-// the scale at which its face is wide enough for the label's box at its lift above the edge (a
+// the scale at which its flat face is wide enough for the label's box at its lift above the edge (a
 // triangle narrows linearly towards its apex), then the factor that leaves at most 2% of the labels
-// without room (a sliver face needs absurd sizes and should not decide the advice).
-void measure_label_room(const Draft& d, const LayoutOptions& o, LayoutResult& r) {
+// without room (a sliver face needs absurd sizes and should not decide the advice). Edges shorter than
+// a label is high do not count either: a 0.2 mm edge would ask for a model 30 times larger, and its
+// seam is found by its neighbours' numbers.
+void measure_label_room(const Draft& d, const unfold::Unfolding& u, const LayoutOptions& o, LayoutResult& r) {
   constexpr double kTolerated = 0.02;
   const LabelOptions metrics;
+  const std::vector<int> root = flat_face_roots(u);
   std::vector<double> factors;
+  int without_room = 0;
   for (const Label& label : d.labels) {
     if (!label.crowded && !label.over_fold) continue;
+    ++without_room;
     const SeamSide& side = d.seams[label.seam].sides[label.side];
     const ScaledPiece& piece = d.pieces[side.piece];
     const OutlineEdge& e = piece.outline_mm[side.loop][side.index];
-    const auto k = std::lower_bound(piece.faces.begin(), piece.faces.end(), e.face) - piece.faces.begin();
     const double length = norm(e.b - e.a);
-    if (!(length > 0) || k >= static_cast<std::ptrdiff_t>(piece.faces.size())) continue;
-    const double height = 2 * std::fabs(signed_area(piece.triangles_mm[k])) / length;
+    if (!(length >= o.label_min_mm) || e.face < 0 || e.face >= u.num_faces()) continue;
+    const double height = flat_face_height_mm(piece, e, root);
     const double h = o.label_min_mm;
     const double width =
         norm(label.box_mm[1] - label.box_mm[0]) * h / label.height_mm + 2 * metrics.clearance_mm;
     const double lift = metrics.gap_mm + h + metrics.clearance_mm;
     factors.push_back((width + lift * length / std::max(height, 1e-9)) / length);
   }
-  r.labels_without_room = static_cast<int>(factors.size());
+  r.labels_without_room = without_room;
   const auto allowed = static_cast<std::size_t>(kTolerated * static_cast<double>(d.labels.size()));
   if (factors.size() <= allowed) return;
   std::sort(factors.begin(), factors.end(), std::greater<>());
@@ -625,7 +656,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     for (int s : d.tabs.dropped)
       r.dropped_tab_seams.push_back(d.numbers[s]);
   }
-  measure_label_room(d, o, r);
+  measure_label_room(d, u, o, r);
   r.piece_letters = d.letters;
   for (const Sheet& sheet : r.sheets)
     r.label_audit += audit_labels(sheet);
