@@ -263,9 +263,35 @@ TEST(GpglFamily, MarkSearchDescribesThePrintedMarksAndStartsTenMillimetresBefore
   o.regmarks = true;
   const std::string out = stream_for("cameo3", studio_media(70, 50), s, o);
   const std::string r = readable(out);
-  EXPECT_NE(r.find("Z6096,6096|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|J1|"),
+  EXPECT_NE(r.find("Z6096,6096|TB50,0|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|J1|"),
             std::string::npos)
       << r.substr(0, 200);
+}
+
+TEST(GpglFamily, TheCameo4LineSendsTheSameMarkSequenceAfterItsOwnWindow) {
+  // [IS] runs one mark sequence for every Silhouette with a sensor; only the window before it differs
+  // (the Portrait 3's 8x12 mat is 12 x 8 in).
+  Sheet s = a4_square();
+  test::add_regmarks(s, {15, 15}, {195, 282}, 15);
+  PlanOptions o;
+  o.regmarks = true;
+  for (auto [device, window] : {std::pair{"cameo4", "Z6096,6096|"}, std::pair{"portrait3", "Z6096,4064|"}}) {
+    const std::string r = readable(stream_for(device, studio_media(70, 50), s, o));
+    EXPECT_NE(
+        r.find(std::string(window) + "TB50,0|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|"),
+        std::string::npos)
+        << device << ": " << r.substr(0, 200);
+  }
+}
+
+TEST(GpglFamily, MachinesWithoutASilhouetteSensorRefusePrintAndCutBeforeAnyByte) {
+  // The CE6000's ARMS is its own protocol [CE] and the GX-24 speaks HP-GL: no TB123 for either.
+  Sheet s = a4_square();
+  test::add_regmarks(s, {15, 15}, {195, 282}, 15);
+  PlanOptions o;
+  o.regmarks = true;
+  for (const char* device : {"ce6000", "roland-gx24"})
+    EXPECT_THROW(plan_job(s, profiles().device(device), studio_media(70, 50), o), DeviceError) << device;
 }
 
 TEST(GpglFamily, RefusesMarksTheSensorCannotFind) {
