@@ -1,5 +1,7 @@
 // GP-GL encoder: golden streams for the test device, and the framing rules of the Silhouette dialect.
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -206,6 +208,38 @@ TEST(GpglFamily, Cameo3SetUpIsTheRecordedStudioSequenceWithAutoBladeDepth) {
             "FG|^\x04TB71|FA|TC|TG1|FN0|TB50,0|\\0,0|Z6096,6096|J1|!5,1|FX10,1|FE0,1|FF1,0,1|FF1,1,1|"
             "FC0,1,1|FC18,1,1|TF1,1|");
   EXPECT_EQ(end_of(s), "L0|\\0,0|M0,0|J0|FN0|TB50,0|");
+}
+
+// The host's writes (endpoint 1) of the real Cameo 3 session in tests/data/umockdev/cameo3.ioctl.
+std::string recorded_cameo3_writes() {
+  std::ifstream in(test::source_dir() / "tests/data/umockdev/cameo3.ioctl");
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::istringstream f(line);
+    std::string req, hex;
+    int status = 0, type = 0, endpoint = 0;
+    if (!(f >> req >> status >> type >> endpoint) || req != "USBDEVFS_REAPURBNDELAY" || endpoint != 1)
+      continue;
+    for (int skip = 0; skip < 5; ++skip)
+      f >> hex;  // status flags, buffer and actual length, error count
+    if (!(f >> hex)) continue;
+    for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+      out += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  }
+  return out;
+}
+
+TEST(GpglFamily, Cameo3HandshakeAndSetUpAreTheRealMachinesRecordedSessionByteForByte) {
+  // The recording (inkscape-silhouette on a Cameo 3, FW V1.60) set 100 mm/s, FX10 and a blade without
+  // an AutoBlade depth; the same settings must give the same bytes up to the first geometry.
+  const std::string recorded = recorded_cameo3_writes();
+  const std::string setup_end = "FC18,1,1\x03";
+  ASSERT_NE(recorded.find(setup_end), std::string::npos) << readable(recorded);
+  MediaProfile m = studio_media(70, 100);
+  m.cut.blade_depth.reset();
+  const std::string ours = stream_for("cameo3", m);
+  EXPECT_EQ(readable(ours.substr(0, ours.find(setup_end) + setup_end.size())),
+            readable(recorded.substr(0, recorded.find(setup_end) + setup_end.size())));
 }
 
 TEST(GpglFamily, Cameo4SetsForceAndAccelerationTwiceAsStudioDoes) {
