@@ -1,5 +1,7 @@
 // `foldkit cut` and `foldkit profiles` end to end: dry runs on the simulated device, streams to files,
 // bad profiles, out-of-area sheets, injected faults (clear message, non-zero exit, bounded time) and Ctrl-C.
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -196,6 +198,24 @@ TEST(CliCut, StopsCleanlyOnCtrlC) {
   const std::string err = slurp(dir / "err.txt");
   EXPECT_NE(err.find("stopped by Ctrl-C after 0 of"), std::string::npos) << err;
   EXPECT_NE(err.find("the tool was raised and the job ended"), std::string::npos) << err;
+}
+
+TEST(CliCut, ADeviceNodeThatStopsTakingDataIsGivenUpAfterTheReadyTimeoutAsOverUsb) {
+  // Before, a node had its own fixed 10 s: --ready-timeout did not reach it. A FIFO whose reader never
+  // reads, its buffer shrunk to one page, is a cutter that has stopped taking data; the labelled GX-24
+  // job (~48 kB of HP-GL) cannot fit in it.
+  const fs::path dir = foldkit::test::temp_dir("cli-node-timeout");
+  const fs::path node = dir / "lp0";
+  ASSERT_EQ(::mkfifo(node.c_str(), 0600), 0);
+  const int reader = ::open(node.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  ::fcntl(reader, F_SETPIPE_SZ, 4096);
+  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "roland-gx24", "--draw-labels", "-o",
+                                     node.string(), "--ready-timeout", "0.3", "-q"});
+  ::close(reader);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("took no data for 300 ms"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
 }
 
 // `foldkit sim`: a stream written by cut (or by another program) replayed on the machine's model.

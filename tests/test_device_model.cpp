@@ -8,6 +8,7 @@
 #include "foldkit/devices/plan.hpp"
 #include "foldkit/devices/send.hpp"
 #include "foldkit/devices/simulated_device.hpp"
+#include "foldkit/devices/stroke_font.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
 #include "test_paths.hpp"
@@ -103,6 +104,29 @@ TEST(MachineModel, PassesEveryJobFoldkitWritesForEveryProfile) {
   for (const DeviceProfile& d : profiles().devices) {
     Sheet s = d.area_width_mm >= kA4.x ? a4_mark_corner() : test::two_piece_sheet();
     EXPECT_EQ(dry_run(d, s, o), "") << d.id;
+  }
+}
+
+const StrokeFont& font() {
+  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
+  return f;
+}
+
+TEST(MachineModel, PassesEveryProfilesFullJobWithLabelsFoldsAndMarks) {
+  // Everything a cut writes: labels with the pen where there is one, folds by the profile's own method,
+  // and on a machine with a mark sensor the printed marks searched; the sheet fits every bed.
+  for (const DeviceProfile& d : profiles().devices) {
+    Sheet s = test::two_piece_sheet({15, 15});  // 120 x 60 mm: the test device's bed is 120 mm wide
+    PlanOptions o;
+    o.draw_labels = d.tool(ToolKind::Pen) != nullptr;
+    o.font = &font();
+    SimOptions so;
+    if (d.regmarks.supported && d.protocol == Protocol::Gpgl) {
+      test::add_regmarks(s, {4, 4}, {s.size_mm.x - 4, s.size_mm.y - 4}, 10);
+      o.regmarks = true;
+      so.printed_marks = printed_marks(s);
+    }
+    EXPECT_EQ(dry_run(d, s, o, so), "") << d.id;
   }
 }
 

@@ -1,10 +1,13 @@
 // FileTransport: regular files atomically, device nodes (a FIFO stands in for /dev/usb/lp0) directly,
 // with bounded waits.
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -155,6 +158,95 @@ TEST(FileTransport, TakesANodeThatReadsAsEndOfFileForAOneWayPort) {
       "\x1b\x04TB123,100,100,0,0\x03M0,0\x03"
       "D10,10\x03";
   EXPECT_THROW(send_job(stream_bytes(stream), t, {}), DeviceError);
+}
+
+// A pseudo-terminal in raw mode stands in for a cutter's two-way device node: its slave is a character
+// device that can be read and written like /dev/usb/lp0, its master plays the cutter.
+struct FakeCutterNode {
+  int master = -1;
+  std::string path;
+  FakeCutterNode() {
+    master = ::posix_openpt(O_RDWR | O_NOCTTY);
+    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) return;
+    path = ::ptsname(master);
+    slave = ::open(path.c_str(), O_RDWR | O_NOCTTY);
+    termios t{};
+    ::tcgetattr(slave, &t);
+    ::cfmakeraw(&t);  // ETX must not be the interrupt character, nor echo come back
+    ::tcsetattr(slave, TCSANOW, &t);
+  }
+  ~FakeCutterNode() {
+    if (slave >= 0) ::close(slave);
+    if (master >= 0) ::close(master);
+  }
+  // Held open until the host has written: with no slave open the master reads as hung up.
+  int slave = -1;
+  // Reads what the host sends; once `trigger` has arrived, answers `reply` once. Returns all it read
+  // when the host closes the node or nothing comes for a while.
+  std::string serve(const std::string& trigger, const std::string& reply) {
+    std::string got;
+    bool answered = false;
+    while (true) {
+      pollfd p{master, POLLIN, 0};
+      if (::poll(&p, 1, 2000) <= 0) break;
+      char buf[256];
+      const ssize_t n = ::read(master, buf, sizeof buf);
+      if (n <= 0) break;
+      got.append(buf, static_cast<std::size_t>(n));
+      if (slave >= 0) {
+        ::close(slave);  // the host has the node open now: its close ends the session
+        slave = -1;
+      }
+      if (!answered && got.find(trigger) != std::string::npos) {
+        answered = true;
+        if (::write(master, reply.data(), reply.size()) != static_cast<ssize_t>(reply.size())) break;
+      }
+    }
+    return got;
+  }
+};
+
+const std::string kMarkJob =
+    "\x1b\x04TB99\x03TB123,100,100,0,0\x03M0,0\x03"
+    "D10,10\x03";
+
+TEST(FileTransport, ReadsTheMarkSearchReplyOnATwoWayNodeAndCutsWhenTheMarksAreFound) {
+  FakeCutterNode node;
+  if (node.path.empty()) GTEST_SKIP() << "no pseudo-terminal to stand in for the node";
+  std::string received;
+  std::jthread cutter([&] { received = node.serve("TB123,100,100,0,0\x03", "    0\x03"); });
+  {
+    FileTransport t(node.path);
+    ASSERT_TRUE(t.reads_replies());
+    SendOptions o;
+    o.poll_interval = std::chrono::milliseconds(1);
+    send_job(stream_bytes(kMarkJob), t, o);
+    t.close();
+  }
+  cutter.join();
+  EXPECT_EQ(received, kMarkJob);
+}
+
+TEST(FileTransport, StopsBeforeTheBladeWhenTheNodeSaysTheMarksWereNotFound) {
+  // Before: a node was written blind, so the D after the search went out whatever the cutter answered.
+  FakeCutterNode node;
+  if (node.path.empty()) GTEST_SKIP() << "no pseudo-terminal to stand in for the node";
+  std::string received;
+  std::jthread cutter([&] { received = node.serve("TB123,100,100,0,0\x03", "    1\x03"); });
+  {
+    FileTransport t(node.path);
+    SendOptions o;
+    o.poll_interval = std::chrono::milliseconds(1);
+    try {
+      send_job(stream_bytes(kMarkJob), t, o);
+      FAIL() << "cut although the marks were not found";
+    } catch (const DeviceError& e) {
+      EXPECT_NE(std::string(e.what()).find("registration marks not found"), std::string::npos) << e.what();
+    }
+  }
+  cutter.join();
+  EXPECT_EQ(received.find("D10,10"), std::string::npos) << received;
+  EXPECT_NE(received.find("TB123"), std::string::npos) << received;
 }
 
 TEST(FileTransport, WritesAPrintAndCutJobToARegularFileForLater) {

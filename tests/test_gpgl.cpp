@@ -1,5 +1,7 @@
 // GP-GL encoder: golden streams for the test device, and the framing rules of the Silhouette dialect.
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -208,6 +210,38 @@ TEST(GpglFamily, Cameo3SetUpIsTheRecordedStudioSequenceWithAutoBladeDepth) {
   EXPECT_EQ(end_of(s), "L0|\\0,0|M0,0|J0|FN0|TB50,0|");
 }
 
+// The host's writes (endpoint 1) of the real Cameo 3 session in tests/data/umockdev/cameo3.ioctl.
+std::string recorded_cameo3_writes() {
+  std::ifstream in(test::source_dir() / "tests/data/umockdev/cameo3.ioctl");
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::istringstream f(line);
+    std::string req, hex;
+    int status = 0, type = 0, endpoint = 0;
+    if (!(f >> req >> status >> type >> endpoint) || req != "USBDEVFS_REAPURBNDELAY" || endpoint != 1)
+      continue;
+    for (int skip = 0; skip < 5; ++skip)
+      f >> hex;  // status flags, buffer and actual length, error count
+    if (!(f >> hex)) continue;
+    for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+      out += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  }
+  return out;
+}
+
+TEST(GpglFamily, Cameo3HandshakeAndSetUpAreTheRealMachinesRecordedSessionByteForByte) {
+  // The recording (inkscape-silhouette on a Cameo 3, FW V1.60) set 100 mm/s, FX10 and a blade without
+  // an AutoBlade depth; the same settings must give the same bytes up to the first geometry.
+  const std::string recorded = recorded_cameo3_writes();
+  const std::string setup_end = "FC18,1,1\x03";
+  ASSERT_NE(recorded.find(setup_end), std::string::npos) << readable(recorded);
+  MediaProfile m = studio_media(70, 100);
+  m.cut.blade_depth.reset();
+  const std::string ours = stream_for("cameo3", m);
+  EXPECT_EQ(readable(ours.substr(0, ours.find(setup_end) + setup_end.size())),
+            readable(recorded.substr(0, recorded.find(setup_end) + setup_end.size())));
+}
+
 TEST(GpglFamily, Cameo4SetsForceAndAccelerationTwiceAsStudioDoes) {
   // Studio on a Cameo 4 Pro: J1 FX15,1 TJ0 !10,1 FC0,1,1 FE0,1 FF1,0,1 FF1,1,1 FX15,1 TJ3 FC18,1,1;
   // the 12x12 mat's window from [IS] set_cutting_mat; no TC on the Cameo 4 line.
@@ -263,9 +297,35 @@ TEST(GpglFamily, MarkSearchDescribesThePrintedMarksAndStartsTenMillimetresBefore
   o.regmarks = true;
   const std::string out = stream_for("cameo3", studio_media(70, 50), s, o);
   const std::string r = readable(out);
-  EXPECT_NE(r.find("Z6096,6096|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|J1|"),
+  EXPECT_NE(r.find("Z6096,6096|TB50,0|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|J1|"),
             std::string::npos)
       << r.substr(0, 200);
+}
+
+TEST(GpglFamily, TheCameo4LineSendsTheSameMarkSequenceAfterItsOwnWindow) {
+  // [IS] runs one mark sequence for every Silhouette with a sensor; only the window before it differs
+  // (the Portrait 3's 8x12 mat is 12 x 8 in).
+  Sheet s = a4_square();
+  test::add_regmarks(s, {15, 15}, {195, 282}, 15);
+  PlanOptions o;
+  o.regmarks = true;
+  for (auto [device, window] : {std::pair{"cameo4", "Z6096,6096|"}, std::pair{"portrait3", "Z6096,4064|"}}) {
+    const std::string r = readable(stream_for(device, studio_media(70, 50), s, o));
+    EXPECT_NE(
+        r.find(std::string(window) + "TB50,0|TB99|TB52,2|TB51,300|TB53,10|TB55,1|TB123,5340,3600,100,100|"),
+        std::string::npos)
+        << device << ": " << r.substr(0, 200);
+  }
+}
+
+TEST(GpglFamily, MachinesWithoutASilhouetteSensorRefusePrintAndCutBeforeAnyByte) {
+  // The CE6000's ARMS is its own protocol [CE] and the GX-24 speaks HP-GL: no TB123 for either.
+  Sheet s = a4_square();
+  test::add_regmarks(s, {15, 15}, {195, 282}, 15);
+  PlanOptions o;
+  o.regmarks = true;
+  for (const char* device : {"ce6000", "roland-gx24"})
+    EXPECT_THROW(plan_job(s, profiles().device(device), studio_media(70, 50), o), DeviceError) << device;
 }
 
 TEST(GpglFamily, RefusesMarksTheSensorCannotFind) {

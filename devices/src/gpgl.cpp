@@ -56,7 +56,10 @@ void setup(std::string& out, const Job& job) {
   cmd(out, "Z", pt(job.window_max));
 }
 
+// [IS] Graphtec.plot sends portrait orientation again right before the mark sequence, though the
+// set-up already did: the search reads its coordinates in the orientation set last.
 void regmark_search(std::string& out, const RegMarkSearch& r) {
+  cmd(out, "TB50,0");
   cmd(out, "TB99");
   cmd(out, "TB52,", num(r.mark_type));
   cmd(out, "TB51,", num(r.arm_length));
