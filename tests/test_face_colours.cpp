@@ -10,6 +10,7 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
+#include "mesh_fixtures.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -221,17 +222,7 @@ std::string gltf_with(const std::vector<float>& positions, const std::vector<uns
   std::string blob(reinterpret_cast<const char*>(positions.data()), positions.size() * 4);
   const std::size_t pos_bytes = blob.size();
   blob.append(reinterpret_cast<const char*>(indices.data()), indices.size() * 2);
-  static const char* kB64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string b64;
-  for (std::size_t i = 0; i < blob.size(); i += 3) {
-    const unsigned n = (static_cast<unsigned char>(blob[i]) << 16) |
-                       (i + 1 < blob.size() ? static_cast<unsigned char>(blob[i + 1]) << 8 : 0) |
-                       (i + 2 < blob.size() ? static_cast<unsigned char>(blob[i + 2]) : 0);
-    b64 += kB64[(n >> 18) & 63];
-    b64 += kB64[(n >> 12) & 63];
-    b64 += i + 1 < blob.size() ? kB64[(n >> 6) & 63] : '=';
-    b64 += i + 2 < blob.size() ? kB64[n & 63] : '=';
-  }
+  const std::string b64 = test::base64(blob);
   const std::string uri = buffer_uri.empty() ? "data:application/octet-stream;base64," + b64 : buffer_uri;
   return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"

@@ -10,29 +10,17 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
+#include "mesh_fixtures.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
 using namespace foldkit::unfold;
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using test::base64;
+using test::signed_volume;
 
 namespace {
-
-std::string base64(const std::string& blob) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < blob.size(); i += 3) {
-    const unsigned n = (static_cast<unsigned char>(blob[i]) << 16) |
-                       (i + 1 < blob.size() ? static_cast<unsigned char>(blob[i + 1]) << 8 : 0) |
-                       (i + 2 < blob.size() ? static_cast<unsigned char>(blob[i + 2]) : 0);
-    out += kDigits[(n >> 18) & 63];
-    out += kDigits[(n >> 12) & 63];
-    out += i + 1 < blob.size() ? kDigits[(n >> 6) & 63] : '=';
-    out += i + 2 < blob.size() ? kDigits[n & 63] : '=';
-  }
-  return out;
-}
 
 template <typename T>
 std::string bytes_of(const std::vector<T>& v) {
@@ -87,15 +75,6 @@ class GltfFiles : public ::testing::Test {
   }
   fs::path dir_;
 };
-
-double signed_volume(const Mesh& m) {
-  double v = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const auto c = m.corners(f);
-    v += dot(c[0], cross(c[1], c[2])) / 6;
-  }
-  return v;
-}
 
 struct Bounds {
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

@@ -11,6 +11,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/mesh_stats.hpp"
+#include "mesh_fixtures.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -110,14 +111,7 @@ std::string ply(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>
   return s.str();
 }
 
-double signed_volume(const Mesh& m) {
-  double v = 0;
-  for (int f = 0; f < m.num_faces(); ++f) {
-    const auto c = m.corners(f);
-    v += dot(c[0], cross(c[1], c[2])) / 6;
-  }
-  return v;
-}
+using test::signed_volume;
 
 void expect_octahedron(const LoadedMesh& loaded) {
   EXPECT_EQ(loaded.mesh.num_faces(), 8);
