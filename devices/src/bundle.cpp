@@ -12,6 +12,7 @@
 
 #include "cairo_image.hpp"
 #include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/devices/cut_svg.hpp"
 #include "foldkit/devices/dxf.hpp"
 #include "foldkit/error.hpp"
 #include "render_internal.hpp"
@@ -217,7 +218,7 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
                                         size_text(s.size_mm) + ")"});
     files.push_back(
         {stem + ".dxf", n + "cut lines, DXF in mm, layers CUT MOUNTAIN VALLEY TAB LABEL REGMARK"});
-    files.push_back({stem + ".svg", n + "cut lines, SVG in mm, one group per role"});
+    files.push_back({stem + ".svg", n + "cut lines, SVG in mm, the DXF's lines and layers (groups)"});
     for (const Part& part : sheet_parts(s)) {
       const auto ppx = part_size_px(part, dpi);
       files.push_back(
@@ -289,7 +290,6 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
     files.emplace_back(dir / name);
     return files.back().stream();
   };
-  const double cap_ratio = detail::cap_height_ratio(options.render.font_family);
   for (std::size_t i = 0; i < sheets.size(); ++i) {
     const Sheet& s = sheets[i];
     const std::string stem = sheet_stem(options, i);
@@ -302,7 +302,7 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
     const std::string png_bytes = png.str();
     open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
     open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
-    detail::write_svg(open(stem + ".svg"), s, options.render, cap_ratio);
+    open(stem + ".svg") << cut_svg_document(s, {options.font}, (dir / (stem + ".svg")).string());
 
     const SurfacePtr image = detail::decode_png(png_bytes);
     if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
