@@ -279,14 +279,15 @@ bool dark(const unsigned char* p) {
 }
 
 // The share of `over`'s red (cut) pixels that lie within 2 px of a dark (printed line) pixel of
-// `print` moved by (dx, dy) pixels; counts the red pixels.
+// `print` moved by (dx, dy) pixels; counts the red pixels. Red that the print has itself (mountain folds)
+// is not the cut: left out.
 double share_on_print(const Rgb& over, const Rgb& print, int dx, int dy, int& reds) {
   constexpr int kReach = 2;
   int near = 0;
   reds = 0;
   for (int y = kReach; y + kReach < over.h; ++y)
     for (int x = kReach; x + kReach < over.w; ++x) {
-      if (!red(over.px(x, y))) continue;
+      if (!red(over.px(x, y)) || (x < print.w && y < print.h && red(print.px(x, y)))) continue;
       ++reds;
       bool found = false;
       for (int v = -kReach; v <= kReach && !found; ++v)
