@@ -92,6 +92,9 @@ std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets
   return devices::write_dxf_sheets(sheets, output, {&font});
 }
 
+// The bundle's prints are for printing: 300 dpi, whatever --dpi says for previews.
+constexpr double kBundleDpi = 300;
+
 // The bundle's file stem: the mesh's name with only characters every cutting program and file system
 // takes in a name.
 std::string bundle_name(const std::string& mesh) {
@@ -108,7 +111,7 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
   devices::BundleOptions options;
   options.name = bundle_name(mesh);
   options.render = render;
-  options.render.png_dpi = 300;  // print resolution, whatever --dpi says for previews
+  options.render.png_dpi = kBundleDpi;
   options.font = &font;
   char scale[64];
   std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
@@ -201,6 +204,8 @@ void setup_make(CLI::App& app) {
     layout::LayoutOptions layout_options = to_layout_options(args->layout);
     layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
     if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
+    if (!args->bundle.empty())
+      devices::check_bundle_sheet_size(layout_options.paper_mm, kBundleDpi, args->bundle);
     ProgressLine line(!args->quiet);
     PipelineRun run =
         load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));

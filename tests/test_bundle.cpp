@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -373,4 +374,24 @@ TEST(Bundle, PaperTooLargeForA300DpiPrintIsRefusedBeforeAnythingIsWritten) {
   huge.size_mm = {5000, 5000};
   EXPECT_THROW(devices::write_bundle({huge}, dir, options("box")), OutputError);
   EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(Bundle, AFailedFirstBundleLeavesNoFolderBehind) {
+  const fs::path dir = test::temp_dir("bundle-first-fail") / "out";
+  Sheet bad = test::two_piece_sheet();
+  bad.paths[0].points_mm[1].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(devices::write_bundle({test::two_piece_sheet(), bad}, dir, options("box")), OutputError);
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(Bundle, MakeRefusesPaperTooLargeForTheBundleBeforeTheWork) {
+  const fs::path dir = test::temp_dir("bundle-cli-huge");
+  // The 5,856-face cow would take a minute to unfold: the refusal comes before.
+  const auto run = test::run_foldkit(
+      {"make", (test::source_dir() / "examples/spot_textured/spot_triangulated.obj").string(), "--paper",
+       "2000x2000mm", "--bundle", (dir / "out").string(), "-q"});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("too large for a 300 dpi print"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }

@@ -202,7 +202,69 @@ Sources
   [5] Wikipedia, "Cricut", https://en.wikipedia.org/wiki/Cricut (model comparison)
 )";
 
+// The files of the bundle, all complete before the first replaces anything, then the earlier
+// bundle's files this one no longer has removed. `dir` exists.
+std::vector<std::filesystem::path> write_into(const std::vector<Sheet>& sheets,
+                                              const std::filesystem::path& dir, const BundleOptions& options,
+                                              const std::vector<std::string>& notes) {
+  std::error_code ec;
+  const std::vector<BundleFile> listing = bundle_files(sheets, options);
+  const std::set<std::filesystem::path> earlier =
+      listed_in_readme(dir / kReadmeName, options.name + "-sheet-");
+
+  std::vector<AtomicFile> files;
+  files.reserve(listing.size());
+  auto open = [&](const std::string& name) -> std::ostream& {
+    files.emplace_back(dir / name);
+    return files.back().stream();
+  };
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    const Sheet& s = sheets[i];
+    const std::string stem = sheet_stem(options, i);
+    std::string error;
+    if (!detail::write_pdf(open(stem + ".pdf"), {s}, options.render, stem, error))
+      throw OutputError((dir / (stem + ".pdf")).string(), error);
+    std::ostringstream png;
+    if (!detail::write_png(png, s, options.render, error))
+      throw OutputError((dir / (stem + ".png")).string(), error);
+    const std::string png_bytes = png.str();
+    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
+    open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
+    open(stem + ".svg") << cut_svg_document(s, {options.font}, (dir / (stem + ".svg")).string());
+
+    const SurfacePtr image = detail::decode_png(png_bytes);
+    if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
+      throw OutputError((dir / (stem + ".png")).string(), "cannot read back the sheet's print for its parts");
+    for (const Part& part : sheet_parts(s)) {
+      const std::string name = part_file(options, i, part);
+      open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
+    }
+  }
+  open(kReadmeName) << bundle_readme(listing, sheets, options, notes);
+
+  std::vector<std::filesystem::path> written;
+  for (AtomicFile& f : files) {
+    f.commit();
+    written.push_back(f.target());
+  }
+  // Only once the new bundle is complete: a sheet the earlier bundle had and this one has not would
+  // otherwise sit beside the new files as if it belonged to them.
+  for (const std::filesystem::path& old : earlier) {
+    if (std::none_of(listing.begin(), listing.end(), [&](const BundleFile& f) { return f.path == old; }))
+      std::filesystem::remove(dir / old, ec);
+  }
+  return written;
+}
+
 }  // namespace
+
+void check_bundle_sheet_size(Vec2 size_mm, double dpi, const std::string& name) {
+  // In doubles: a hostile paper size must not overflow an int before it is refused.
+  const double px_per_mm = dpi / kMmPerInch;
+  if (size_mm.x * px_per_mm * size_mm.y * px_per_mm <= kMaxSheetPixels) return;
+  throw OutputError(name, size_text(size_mm) + " is too large for a " + fixed(dpi, 0) +
+                              " dpi print in a bundle (at most A0)");
+}
 
 std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const BundleOptions& options) {
   std::vector<BundleFile> files;
@@ -265,67 +327,24 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
   if (sheets.empty()) throw OutputError(dir.string(), "nothing to write: no sheets");
   if (!(std::isfinite(options.render.png_dpi) && options.render.png_dpi > 0))
     throw OutputError(dir.string(), "PNG resolution must be a positive number of dots per inch");
-  for (std::size_t i = 0; i < sheets.size(); ++i) {
-    // In doubles: a hostile paper size must not overflow an int before it is refused.
-    const double px_per_mm = options.render.png_dpi / kMmPerInch;
-    const Vec2 size = sheets[i].size_mm;
-    if (!(size.x * px_per_mm * size.y * px_per_mm <= kMaxSheetPixels))
-      throw OutputError(dir.string(), "sheet " + std::to_string(i + 1) + " (" + size_text(sheets[i].size_mm) +
-                                          ") is too large for a " + fixed(options.render.png_dpi, 0) +
-                                          " dpi print in a bundle (at most A0)");
-  }
+  for (std::size_t i = 0; i < sheets.size(); ++i)
+    check_bundle_sheet_size(sheets[i].size_mm, options.render.png_dpi,
+                            dir.string() + ": sheet " + std::to_string(i + 1));
   std::error_code ec;
+  bool created = false;
   if (!std::filesystem::is_directory(dir, ec)) {
     if (std::filesystem::exists(dir, ec)) throw OutputError(dir.string(), "exists and is not a folder");
     if (!std::filesystem::create_directory(dir, ec))
       throw OutputError(dir.string(), "cannot create the folder: " + ec.message());
+    created = true;
   }
-  const std::vector<BundleFile> listing = bundle_files(sheets, options);
-  const std::set<std::filesystem::path> earlier =
-      listed_in_readme(dir / kReadmeName, options.name + "-sheet-");
-
-  std::vector<AtomicFile> files;
-  files.reserve(listing.size());
-  auto open = [&](const std::string& name) -> std::ostream& {
-    files.emplace_back(dir / name);
-    return files.back().stream();
-  };
-  for (std::size_t i = 0; i < sheets.size(); ++i) {
-    const Sheet& s = sheets[i];
-    const std::string stem = sheet_stem(options, i);
-    std::string error;
-    if (!detail::write_pdf(open(stem + ".pdf"), {s}, options.render, stem, error))
-      throw OutputError((dir / (stem + ".pdf")).string(), error);
-    std::ostringstream png;
-    if (!detail::write_png(png, s, options.render, error))
-      throw OutputError((dir / (stem + ".png")).string(), error);
-    const std::string png_bytes = png.str();
-    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
-    open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
-    open(stem + ".svg") << cut_svg_document(s, {options.font}, (dir / (stem + ".svg")).string());
-
-    const SurfacePtr image = detail::decode_png(png_bytes);
-    if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
-      throw OutputError((dir / (stem + ".png")).string(), "cannot read back the sheet's print for its parts");
-    for (const Part& part : sheet_parts(s)) {
-      const std::string name = part_file(options, i, part);
-      open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
-    }
+  try {
+    return write_into(sheets, dir, options, notes);
+  } catch (...) {
+    // A failed first bundle leaves no folder behind (its files removed themselves): nothing new at all.
+    if (created) std::filesystem::remove(dir, ec);  // only removes it when empty
+    throw;
   }
-  open(kReadmeName) << bundle_readme(listing, sheets, options, notes);
-
-  std::vector<std::filesystem::path> written;
-  for (AtomicFile& f : files) {
-    f.commit();
-    written.push_back(f.target());
-  }
-  // Only once the new bundle is complete: a sheet the earlier bundle had and this one has not would
-  // otherwise sit beside the new files as if it belonged to them.
-  for (const std::filesystem::path& old : earlier) {
-    if (std::none_of(listing.begin(), listing.end(), [&](const BundleFile& f) { return f.path == old; }))
-      std::filesystem::remove(dir / old, ec);
-  }
-  return written;
 }
 
 }  // namespace foldkit::devices

@@ -36,7 +36,13 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
 std::string bundle_readme(const std::vector<BundleFile>& files, const std::vector<Sheet>& sheets,
                           const BundleOptions& options, const std::vector<std::string>& notes = {});
 
-/// Writes the bundle into `dir` (created when missing; its parent must exist). Every file is complete
+/// Throws OutputError (naming `name`) when a sheet of `size_mm` is too large for a bundle's print at
+/// `dpi`: more than 150 megapixels (A0 at 300 dpi is 139), as the print is held twice while its parts are
+/// cut out of it. write_bundle checks every sheet; a caller may check the paper before the work.
+void check_bundle_sheet_size(Vec2 size_mm, double dpi, const std::string& name);
+
+/// Writes the bundle into `dir` (created when missing, and removed again when a failure leaves it
+/// empty; its parent must exist). Every file is complete
 /// before the first replaces anything; files an earlier bundle listed in its README.txt that this one no
 /// longer has (a sheet fewer) are removed, nothing else in the folder is touched. Throws OutputError
 /// naming the file. Returns the files written, README.txt last.
