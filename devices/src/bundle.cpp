@@ -166,11 +166,12 @@ Silhouette Studio (Basic edition opens DXF and PDF; SVG needs Designer edition o
 Cricut Design Space (Print Then Cut):
   Upload > the NAME-sheet-N-part-M.png files (transparent backgrounds: Design Space cuts around
   the outline of the image), keep them as "Print Then Cut" images, and set each one's width to the
-  width listed above so the print keeps its scale. SVG cut lines: upload NAME-sheet-N.svg as a cut
-  image (groups cut, mountain, valley: change the fold groups to Score).
+  width listed above so the print keeps its scale. Cut lines alone (blank card, no print): upload
+  NAME-sheet-N.svg as a cut image; its groups are the DXF's layers in the same colours: keep cut,
+  set mountain and valley to Score (or hide them), hide tab, label and regmark.
 Brother CanvasWorkspace:
-  Import NAME-sheet-N.svg (File > Import SVG); the groups carry the roles; set folds to a half cut or
-  to none and score by hand.
+  Import NAME-sheet-N.svg; its groups are the DXF's layers: cut the cut group,
+  set mountain and valley to a half cut or to none (score by hand), and delete tab, label, regmark.
 
 SIZE LIMITS THE PROGRAMS STATE
 (only figures with a source; where we found none we say so rather than guess)
