@@ -395,3 +395,23 @@ TEST(Bundle, MakeRefusesPaperTooLargeForTheBundleBeforeTheWork) {
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
+
+// 9.25 x 6.75 in (235 x 171 mm) is what Print Then Cut takes: a part beyond it, in both orientations,
+// is marked in the README; one that fits turned is not.
+TEST(Bundle, TheReadmeMarksPartsLargerThanPrintThenCutsArea) {
+  const fs::path dir = test::temp_dir("bundle-ptc") / "out";
+  Sheet s;
+  s.size_mm = {420, 297};
+  s.paths.push_back(test::rect_path(PathRole::Cut, {10, 10}, {190, 185}, 0));   // 180 x 175: too wide
+  s.paths.push_back(test::rect_path(PathRole::Cut, {200, 10}, {370, 240}, 1));  // 170 x 230: fits
+  devices::write_bundle({s}, dir, options("big"));
+  std::istringstream readme(slurp(dir / "README.txt"));
+  std::string line, part1, part2;
+  while (std::getline(readme, line)) {
+    if (line.rfind("big-sheet-1-part-1.png", 0) == 0) part1 = line;
+    if (line.rfind("big-sheet-1-part-2.png", 0) == 0) part2 = line;
+  }
+  EXPECT_NE(part1.find("larger than Print Then Cut"), std::string::npos) << part1;
+  EXPECT_EQ(part2.find("larger than Print Then Cut"), std::string::npos) << part2;
+  EXPECT_FALSE(part2.empty());
+}

@@ -27,6 +27,8 @@ constexpr const char* kReadmeName = "README.txt";
 // (A0 at 300 dpi is 139) keeps that near 1.2 GB; larger paper is refused before anything is drawn.
 constexpr double kMaxSheetPixels = 150e6;
 constexpr const char* kFilesHeading = "FILES";
+// Print Then Cut's area, 9.25 x 6.75 in (source [6] in the README).
+constexpr double kPrintThenCutLongMm = 9.25 * 25.4, kPrintThenCutShortMm = 6.75 * 25.4;
 
 using detail::ContextPtr;
 using detail::SurfacePtr;
@@ -81,6 +83,12 @@ std::vector<Part> sheet_parts(const Sheet& sheet) {
     parts.push_back(std::move(part));
   }
   return parts;
+}
+
+// Whether the part fits Print Then Cut's area in either orientation.
+bool fits_print_then_cut(const Part& part) {
+  const double w = part.box_mm.width(), h = part.box_mm.height();
+  return std::max(w, h) <= kPrintThenCutLongMm && std::min(w, h) <= kPrintThenCutShortMm;
 }
 
 std::string part_file(const BundleOptions& o, std::size_t sheet, const Part& part) {
@@ -187,8 +195,11 @@ Cricut Design Space
   - Print Then Cut page size is chosen in Settings > Load Type; the tutorial [3] recommends
     1.25 to 2.5 cm margins around the design for the printed sensor marks.
   - Mats 12 x 12 in and 12 x 24 in (Explore), Explore Air 2 cuts up to 11.5 x 23.5 in [5].
-  - Largest Print Then Cut image and upload file size: no source found (Design Space refuses an
-    image that is too large when you press Make; scale the part PNGs no larger than listed above).
+  - Print Then Cut prints and cuts within 9.25 x 6.75 in (235 x 171 mm) [6] (a summary in an
+    open-source project, not Cricut's own page): parts marked "larger than Print Then Cut" above
+    do not fit; make the model smaller (--size) or cut those parts from the DXF or SVG instead.
+  - Its printed sensor marks need about 14 mm of margin on every side [7] (a user's report).
+  - Upload file size limit: no source found.
 Brother CanvasWorkspace
   - SVG import size and file limits, mat sizes: no source found.
 
@@ -201,6 +212,9 @@ Sources
       https://github.com/Malacath-92/Proxy-PDF-Maker (Silhouette Studio and Cricut Design Space steps)
   [4] smart-silhouette.com, "Cut border", https://smart-silhouette.com/cut-border/
   [5] Wikipedia, "Cricut", https://en.wikipedia.org/wiki/Cricut (model comparison)
+  [6] piecepackr, issue 343 "Cricut cut line files" (comment of 2026-05-05),
+      https://github.com/piecepackr/piecepackr/issues/343
+  [7] MTGProxyPrinter, discussion 4, https://github.com/luziferius/MTGProxyPrinter/discussions/4
 )";
 
 // The files of the bundle, all complete before the first replaces anything, then the earlier
@@ -290,7 +304,8 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
                size_text(part.box_mm.max - part.box_mm.min + Vec2{2 * kPartPadMm, 2 * kPartPadMm}) + " (" +
                std::to_string(ppx[0]) + " x " + std::to_string(ppx[1]) + " px), top-left at (" +
                fixed(part.box_mm.min.x - kPartPadMm, 1) + ", " + fixed(part.box_mm.min.y - kPartPadMm, 1) +
-               ") mm on the sheet"});
+               ") mm on the sheet" +
+               (fits_print_then_cut(part) ? "" : "; larger than Print Then Cut's area")});
     }
   }
   files.push_back({kReadmeName, "this file"});
