@@ -115,7 +115,24 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
   options.font = &font;
   char scale[64];
   std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
-  return devices::write_bundle(sheets, dir, options, {"model: " + mesh + " at " + scale});
+  std::vector<std::string> notes = {"model: " + mesh + " at " + scale};
+  // What only foldkit's own commands add, which the library's README text does not name.
+  const bool marks = std::any_of(sheets.begin(), sheets.end(), [](const Sheet& s) {
+    return std::any_of(s.paths.begin(), s.paths.end(),
+                       [](const Path& p) { return p.role == PathRole::RegMark; });
+  });
+  notes.push_back(
+      marks ? "registration marks: the sheets carry Silhouette marks; print each PDF at 100 % and cut it "
+              "with `foldkit cut MESH --regmarks --device ID` and the same layout options (it applies "
+              "the offset `foldkit calibrate` stored)"
+            : "registration marks: none of foldkit's (make the bundle with --regmarks to cut a print "
+              "with `foldkit cut --regmarks`)");
+  const auto files = devices::bundle_files(sheets, options);
+  if (std::any_of(files.begin(), files.end(),
+                  [](const devices::BundleFile& f) { return f.too_large_for_print_then_cut; }))
+    notes.push_back(
+        "Print Then Cut: some parts are larger than its area (marked below); a smaller --size fits them");
+  return devices::write_bundle(sheets, dir, options, notes);
 }
 
 // The parts in letter order: each part's letter, sheet (1-based) and faces, as 0-based indices of the

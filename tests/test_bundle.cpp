@@ -415,3 +415,21 @@ TEST(Bundle, TheReadmeMarksPartsLargerThanPrintThenCutsArea) {
   EXPECT_EQ(part2.find("larger than Print Then Cut"), std::string::npos) << part2;
   EXPECT_FALSE(part2.empty());
 }
+
+// What foldkit's own commands add to a bundle is said at the top of its README: whether the sheets
+// carry registration marks for `foldkit cut --regmarks`.
+TEST(Bundle, TheReadmeSaysWhetherTheSheetsCarryRegistrationMarks) {
+  const fs::path dir = test::temp_dir("bundle-marks");
+  const std::string mesh = test::example_mesh("spot_128.obj").string();
+  for (const bool marks : {true, false}) {
+    std::vector<std::string> args = {
+        "make", mesh, "--size", "80mm", "--bundle", (dir / (marks ? "m" : "n")).string(), "-q"};
+    if (marks) args.push_back("--regmarks");
+    const auto run = test::run_foldkit(args);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string readme = slurp(dir / (marks ? "m" : "n") / "README.txt");
+    const std::string head = readme.substr(0, readme.find("FILES"));
+    EXPECT_NE(head.find(marks ? "the sheets carry Silhouette marks" : "none of foldkit's"), std::string::npos)
+        << head;
+  }
+}

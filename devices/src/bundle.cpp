@@ -168,9 +168,12 @@ Silhouette Studio (Basic edition opens DXF and PDF; SVG needs Designer edition o
   the top edge), so the lines land where NAME-sheet-N.pdf prints them. Each role is its own layer
   and colour: CUT black/white, MOUNTAIN red, VALLEY blue, TAB grey, LABEL green, REGMARK magenta.
   In the Send panel cut CUT, give MOUNTAIN and VALLEY a light score setting (or none), and do not
-  cut LABEL, TAB or REGMARK. To print and cut: print NAME-sheet-N.pdf at 100 % (not "fit to page"),
-  then either Studio's own registration marks or `foldkit cut MODEL --regmarks` (which applies the
-  offset stored by `foldkit calibrate`).
+  cut LABEL, TAB or REGMARK. Print and cut with Studio's own registration marks: with the DXF open,
+  import NAME-sheet-N.png, give it the page's size (listed above; the file says 300 dpi) and move
+  it to the page's top-left corner, under the lines; switch on registration marks (at least 10 mm
+  in from the edge [2]: no part may lie in their area), print from Studio at 100 % and cut.
+  Otherwise print NAME-sheet-N.pdf at 100 % (not "fit to page") and cut by hand, or with the
+  sheet's own marks if it has them (see the notes at the top).
 Cricut Design Space (Print Then Cut):
   Upload > the NAME-sheet-N-part-M.png files (transparent backgrounds: Design Space cuts around
   the outline of the image), keep them as "Print Then Cut" images, and set each one's width to the
@@ -197,7 +200,7 @@ Cricut Design Space
   - Mats 12 x 12 in and 12 x 24 in (Explore), Explore Air 2 cuts up to 11.5 x 23.5 in [5].
   - Print Then Cut prints and cuts within 9.25 x 6.75 in (235 x 171 mm) [6] (a summary in an
     open-source project, not Cricut's own page): parts marked "larger than Print Then Cut" above
-    do not fit; make the model smaller (--size) or cut those parts from the DXF or SVG instead.
+    do not fit; make the model smaller or cut those parts from the DXF or SVG instead.
   - Its printed sensor marks need about 14 mm of margin on every side [7] (a user's report).
   - Upload file size limit: no source found.
 Brother CanvasWorkspace
@@ -304,8 +307,8 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
                size_text(part.box_mm.max - part.box_mm.min + Vec2{2 * kPartPadMm, 2 * kPartPadMm}) + " (" +
                std::to_string(ppx[0]) + " x " + std::to_string(ppx[1]) + " px), top-left at (" +
                fixed(part.box_mm.min.x - kPartPadMm, 1) + ", " + fixed(part.box_mm.min.y - kPartPadMm, 1) +
-               ") mm on the sheet" +
-               (fits_print_then_cut(part) ? "" : "; larger than Print Then Cut's area")});
+               ") mm on the sheet" + (fits_print_then_cut(part) ? "" : "; larger than Print Then Cut's area"),
+           !fits_print_then_cut(part)});
     }
   }
   files.push_back({kReadmeName, "this file"});

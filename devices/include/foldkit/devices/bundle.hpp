@@ -24,8 +24,9 @@ struct BundleOptions {
 
 /// One file of a bundle, as the README lists it.
 struct BundleFile {
-  std::filesystem::path path;  ///< inside the bundle directory
-  std::string what;            ///< one line for the README
+  std::filesystem::path path;                 ///< inside the bundle directory
+  std::string what;                           ///< one line for the README
+  bool too_large_for_print_then_cut = false;  ///< a part PNG beyond Print Then Cut's 9.25 x 6.75 in
 };
 
 /// The files of a bundle, in README order, without writing anything.
