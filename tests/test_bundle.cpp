@@ -273,6 +273,7 @@ TEST(Bundle, MakeWritesTheBundleOfATwoSheetModel) {
   const auto listed = readme_files(dir / "README.txt");
   EXPECT_EQ(folder_files(dir), listed);
   EXPECT_EQ(listed.count("fish_350-sheet-" + std::to_string(sheets + 1) + ".pdf"), 0u);
+  EXPECT_EQ(listed.count("fish_350-guide.pdf"), 1u) << "the assembly guide goes with the bundle";
   for (int sheet = 1; sheet <= sheets; ++sheet) {
     const std::string stem = "fish_350-sheet-" + std::to_string(sheet);
     for (const char* ext : {".pdf", ".png", ".dxf", ".svg"})
@@ -424,12 +425,28 @@ TEST(Bundle, TheReadmeSaysWhetherTheSheetsCarryRegistrationMarks) {
   for (const bool marks : {true, false}) {
     std::vector<std::string> args = {
         "make", mesh, "--size", "80mm", "--bundle", (dir / (marks ? "m" : "n")).string(), "-q"};
-    if (marks) args.push_back("--regmarks");
+    // The guide goes with the bundle unless --no-guide.
+    args.push_back(marks ? "--regmarks" : "--no-guide");
     const auto run = test::run_foldkit(args);
     ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(fs::exists(dir / (marks ? "m" : "n") / "spot_128-guide.pdf"), marks);
     const std::string readme = slurp(dir / (marks ? "m" : "n") / "README.txt");
     const std::string head = readme.substr(0, readme.find("FILES"));
     EXPECT_NE(head.find(marks ? "the sheets carry Silhouette marks" : "none of foldkit's"), std::string::npos)
         << head;
   }
+}
+
+TEST(Bundle, TheAssemblyGuideIsListedAndGoesWhenABundleWithoutItReplacesIt) {
+  const fs::path dir = test::temp_dir("bundle-guide") / "out";
+  const Sheet guide = test::two_piece_sheet();
+  devices::BundleOptions with = options("box");
+  with.guide = &guide;
+  devices::write_bundle({test::two_piece_sheet()}, dir, with);
+  EXPECT_EQ(readme_files(dir / "README.txt").count("box-guide.pdf"), 1u);
+  EXPECT_EQ(slurp(dir / "box-guide.pdf").rfind("%PDF", 0), 0u);
+  EXPECT_EQ(folder_files(dir), readme_files(dir / "README.txt"));
+  devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
+  EXPECT_FALSE(fs::exists(dir / "box-guide.pdf"));
+  EXPECT_EQ(folder_files(dir), readme_files(dir / "README.txt"));
 }

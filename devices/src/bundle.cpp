@@ -91,6 +91,10 @@ bool fits_print_then_cut(const Part& part) {
   return std::max(w, h) <= kPrintThenCutLongMm && std::min(w, h) <= kPrintThenCutShortMm;
 }
 
+std::string guide_file(const BundleOptions& o) {
+  return o.name + "-guide.pdf";
+}
+
 std::string part_file(const BundleOptions& o, std::size_t sheet, const Part& part) {
   return sheet_stem(o, sheet) + "-part-" + part.name + ".png";
 }
@@ -132,7 +136,7 @@ std::string part_png(const SurfacePtr& sheet_image, const Part& part, double dpi
 
 // File names the README of an earlier bundle in `dir` lists (empty when there is none).
 std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& readme,
-                                                 const std::string& stem_prefix) {
+                                                 const BundleOptions& o) {
   std::set<std::filesystem::path> names;
   std::ifstream in(readme);
   std::string line;
@@ -145,12 +149,13 @@ std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& re
     if (!in_files) continue;
     if (line.empty()) break;
     const std::string name = line.substr(0, line.find(' '));
-    // Only files this bundle would write (its own name, a sheet suffix, one of its types): a README
-    // edited by hand must never make us delete a user's file or anything outside the folder.
+    // Only files this bundle would write (its own name, a sheet suffix, one of its types, or its
+    // guide): a README edited by hand must never make us delete a user's file or anything outside
+    // the folder.
     const std::string ext = std::filesystem::path(name).extension().string();
-    if (name.rfind(stem_prefix, 0) == 0 && name.find('/') == std::string::npos &&
-        (ext == ".pdf" || ext == ".png" || ext == ".dxf" || ext == ".svg"))
-      names.insert(name);
+    const bool sheet_file = name.rfind(o.name + "-sheet-", 0) == 0 && name.find('/') == std::string::npos &&
+                            (ext == ".pdf" || ext == ".png" || ext == ".dxf" || ext == ".svg");
+    if (sheet_file || name == guide_file(o)) names.insert(name);
   }
   return names;
 }
@@ -227,8 +232,7 @@ std::vector<std::filesystem::path> write_into(const std::vector<Sheet>& sheets,
                                               const std::vector<std::string>& notes) {
   std::error_code ec;
   const std::vector<BundleFile> listing = bundle_files(sheets, options);
-  const std::set<std::filesystem::path> earlier =
-      listed_in_readme(dir / kReadmeName, options.name + "-sheet-");
+  const std::set<std::filesystem::path> earlier = listed_in_readme(dir / kReadmeName, options);
 
   std::vector<AtomicFile> files;
   files.reserve(listing.size());
@@ -257,6 +261,12 @@ std::vector<std::filesystem::path> write_into(const std::vector<Sheet>& sheets,
       const std::string name = part_file(options, i, part);
       open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
     }
+  }
+  if (options.guide) {
+    const std::string name = guide_file(options);
+    std::string error;
+    if (!detail::write_pdf(open(name), {*options.guide}, options.render, options.name + " guide", error))
+      throw OutputError((dir / name).string(), error);
   }
   open(kReadmeName) << bundle_readme(listing, sheets, options, notes);
 
@@ -311,6 +321,8 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
            !fits_print_then_cut(part)});
     }
   }
+  if (options.guide)
+    files.push_back({guide_file(options), "assembly guide: which part goes where and in what order, PDF"});
   files.push_back({kReadmeName, "this file"});
   return files;
 }

@@ -19,6 +19,7 @@ struct BundleOptions {
   std::string name = "model";        ///< file stem: NAME-sheet-1.pdf, …
   RenderOptions render;              ///< styles; the PNGs are written at png_dpi (300 unless changed)
   const StrokeFont* font = nullptr;  ///< labels as strokes in the DXF (required when sheets have texts)
+  const Sheet* guide = nullptr;      ///< assembly guide, written as NAME-guide.pdf when given
   BundleOptions() { render.png_dpi = 300; }
 };
 
