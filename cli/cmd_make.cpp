@@ -191,7 +191,7 @@ void setup_make(CLI::App& app) {
   cmd->add_option(
       "--bundle", args->bundle,
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
-      "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, README.txt");
+      "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, the guide, README.txt");
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
       ->check(number_in(10, 2400, "dpi"))
       ->capture_default_str();
