@@ -39,6 +39,31 @@
 namespace foldkit::cli {
 namespace {
 
+// plan_job, with a job that leaves the cutting area only because of the stored print-and-cut offset
+// saying so: the user did not move the parts, the calibration did.
+devices::Job plan_with_offset(const Sheet& sheet, const devices::DeviceProfile& device,
+                              const devices::MediaProfile& media, const devices::PlanOptions& plan) {
+  try {
+    return devices::plan_job(sheet, device, media, plan);
+  } catch (const DeviceError& e) {
+    if (plan.print_cut_offset_mm == Vec2{0, 0}) throw;
+    devices::PlanOptions without = plan;
+    without.print_cut_offset_mm = {0, 0};
+    try {
+      (void)devices::plan_job(sheet, device, media, without);
+    } catch (const DeviceError&) {
+      throw e;  // the job does not fit even without the offset: the offset is not the cause
+    }
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  " (only with the print-and-cut offset %+.2f, %+.2f mm `foldkit calibrate` stored for %s: "
+                  "check it with `foldkit calibrate --device %s --show`)",
+                  plan.print_cut_offset_mm.x, plan.print_cut_offset_mm.y, device.id.c_str(),
+                  device.id.c_str());
+    throw DeviceError(e.what() + std::string(note));
+  }
+}
+
 struct CutArgs {
   std::string mesh;
   std::string device, media = "cardstock-220", mat;
@@ -270,7 +295,7 @@ void setup_cut(CLI::App& app) {
       if (args->sheet > 0 && i + 1 != static_cast<std::size_t>(args->sheet)) continue;
       line.update("planning sheet " + std::to_string(i + 1));
       // Every stroke is planned and bounds-checked for this sheet before a byte is sent.
-      const devices::Job job = devices::plan_job(sheets[i], device, media, plan);
+      const devices::Job job = plan_with_offset(sheets[i], device, media, plan);
       const std::string stream =
           job.protocol == devices::Protocol::Gpgl ? devices::encode_gpgl(job) : devices::encode_hpgl(job);
       SheetReport rep;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -92,6 +93,9 @@ std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets
   return devices::write_dxf_sheets(sheets, output, {&font});
 }
 
+// The bundle's prints are for printing: 300 dpi, whatever --dpi says for previews.
+constexpr double kBundleDpi = 300;
+
 // The bundle's file stem: the mesh's name with only characters every cutting program and file system
 // takes in a name.
 std::string bundle_name(const std::string& mesh) {
@@ -101,18 +105,36 @@ std::string bundle_name(const std::string& mesh) {
   return name.empty() ? "model" : name;
 }
 
-std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const std::string& mesh,
-                                                const std::string& dir, const devices::RenderOptions& render,
-                                                double size_mm) {
+std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const Sheet* guide,
+                                                const std::string& mesh, const std::string& dir,
+                                                const devices::RenderOptions& render, double size_mm) {
   const devices::StrokeFont font = load_label_font();
   devices::BundleOptions options;
   options.name = bundle_name(mesh);
   options.render = render;
-  options.render.png_dpi = 300;  // print resolution, whatever --dpi says for previews
+  options.render.png_dpi = kBundleDpi;
   options.font = &font;
+  options.guide = guide;
   char scale[64];
   std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
-  return devices::write_bundle(sheets, dir, options, {"model: " + mesh + " at " + scale});
+  std::vector<std::string> notes = {"model: " + mesh + " at " + scale};
+  // What only foldkit's own commands add, which the library's README text does not name.
+  const bool marks = std::any_of(sheets.begin(), sheets.end(), [](const Sheet& s) {
+    return std::any_of(s.paths.begin(), s.paths.end(),
+                       [](const Path& p) { return p.role == PathRole::RegMark; });
+  });
+  notes.push_back(
+      marks ? "registration marks: the sheets carry Silhouette marks; print each PDF at 100 % and cut it "
+              "with `foldkit cut MESH --regmarks --device ID` and the same layout options (it applies "
+              "the offset `foldkit calibrate` stored)"
+            : "registration marks: none of foldkit's (make the bundle with --regmarks to cut a print "
+              "with `foldkit cut --regmarks`)");
+  const auto files = devices::bundle_files(sheets, options);
+  if (std::any_of(files.begin(), files.end(),
+                  [](const devices::BundleFile& f) { return f.too_large_for_print_then_cut; }))
+    notes.push_back(
+        "Print Then Cut: some parts are larger than its area (marked below); a smaller --size fits them");
+  return devices::write_bundle(sheets, dir, options, notes);
 }
 
 // The parts in letter order: each part's letter, sheet (1-based) and faces, as 0-based indices of the
@@ -169,7 +191,7 @@ void setup_make(CLI::App& app) {
   cmd->add_option(
       "--bundle", args->bundle,
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
-      "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, README.txt");
+      "and CanvasWorkspace: per sheet PNG (300 dpi), PDF, DXF and SVG, part PNGs, the guide, README.txt");
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
       ->check(number_in(10, 2400, "dpi"))
       ->capture_default_str();
@@ -183,7 +205,8 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
   cmd->add_flag("--no-guide", args->no_guide,
-                "No assembly guide (a last PDF page, or NAME-guide.svg/.png beside SVG and PNG sheets)");
+                "No assembly guide (a last PDF page, NAME-guide.svg/.png beside SVG and PNG sheets, "
+                "NAME-guide.pdf in a bundle)");
   add_layout_options(*cmd, args->layout);
   add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
@@ -201,6 +224,8 @@ void setup_make(CLI::App& app) {
     layout::LayoutOptions layout_options = to_layout_options(args->layout);
     layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
     if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
+    if (!args->bundle.empty())
+      devices::check_bundle_sheet_size(layout_options.paper_mm, kBundleDpi, args->bundle);
     ProgressLine line(!args->quiet);
     PipelineRun run =
         load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
@@ -222,23 +247,25 @@ void setup_make(CLI::App& app) {
     std::vector<std::filesystem::path> files;
     int guide_pages = 0;
     std::size_t sheet_files = 0;
+    const bool pdf = format == "pdf", picture = format == "svg" || format == "png";
+    // A guide beside SVG/PNG sheets is one more file, which standard output cannot hold.
+    const bool guide_beside_output = !args->output.empty() && (pdf || (picture && !to_stdout));
+    std::optional<Sheet> guide;
+    if (!args->no_guide && (guide_beside_output || !args->bundle.empty())) {
+      line.update("drawing the assembly guide");
+      layout::GuideOptions guide_options;
+      guide_options.paper_mm = layout_options.paper_mm;
+      guide_options.margin_mm = layout_options.margin_mm;
+      guide_options.model_name = layout_options.model_name;
+      guide = layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
+    }
     if (!args->output.empty()) {
-      const bool pdf = format == "pdf", picture = format == "svg" || format == "png";
-      // A guide beside SVG/PNG sheets is one more file, which standard output cannot hold.
-      const bool guide_wanted = !args->no_guide && (pdf || (picture && !to_stdout));
-      if (guide_wanted) {
-        line.update("drawing the assembly guide");
-        layout::GuideOptions guide_options;
-        guide_options.paper_mm = layout_options.paper_mm;
-        guide_options.margin_mm = layout_options.margin_mm;
-        guide_options.model_name = layout_options.model_name;
-        const Sheet guide =
-            layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
+      if (guide && guide_beside_output) {
         guide_pages = 1;
         if (pdf) {
           // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
           std::vector<Sheet> pages = r.sheets;
-          pages.push_back(guide);
+          pages.push_back(*guide);
           files = write_sheets(pages, args->output, render);
           sheet_files = files.size();
         } else {
@@ -247,7 +274,7 @@ void setup_make(CLI::App& app) {
           std::filesystem::path guide_path = args->output;
           guide_path.replace_filename(guide_path.stem().string() + "-guide" +
                                       guide_path.extension().string());
-          const auto written = devices::render_sheets({guide}, guide_path, render);
+          const auto written = devices::render_sheets({*guide}, guide_path, render);
           files.insert(files.end(), written.begin(), written.end());
         }
       } else {
@@ -257,7 +284,8 @@ void setup_make(CLI::App& app) {
     }
     if (!args->bundle.empty()) {
       line.update("writing the bundle");
-      const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm);
+      const auto bundled =
+          write_bundle(r.sheets, guide ? &*guide : nullptr, args->mesh, args->bundle, render, r.size_mm);
       files.insert(files.end(), bundled.begin(), bundled.end());
     }
     line.clear();

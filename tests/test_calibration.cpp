@@ -271,3 +271,19 @@ TEST(Calibration, BadOffsetsAreUsageErrorsAndStoreNothing) {
   EXPECT_NE(hpgl.exit_code, 0);
   EXPECT_NE(hpgl.err.find("registration marks"), std::string::npos) << hpgl.err;
 }
+
+// The stored offset moves the blade: a job it pushes off the cutting area is refused before a byte is
+// written, and the error says that the offset, not the layout, is the cause.
+TEST(Calibration, AnOffsetThatPushesTheCutOffTheMatIsRefusedAndNamed) {
+  const fs::path dir = test::temp_dir("calib-bounds");
+  const ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
+  ASSERT_EQ(test::run_foldkit({"calibrate", "--device", "cameo4", "--offset", "-25,-25mm"}).exit_code, 0);
+  const auto run =
+      test::run_foldkit({"cut", test::example_mesh("spot_128.obj").string(), "--device", "cameo4",
+                         "--regmarks", "--size", "180mm", "-q", "-o", (dir / "job.gpgl").string()});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("leaves the cutting area"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("only with the print-and-cut offset -25.00, -25.00 mm"), std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir / "job.gpgl"));
+}

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "scoped_env.hpp"
 #include "test_images.hpp"
 #include "test_paths.hpp"
 
@@ -298,14 +299,15 @@ bool dark(const unsigned char* p) {
 }
 
 // The share of `over`'s red (cut) pixels that lie within 2 px of a dark (printed line) pixel of
-// `print` moved by (dx, dy) pixels; counts the red pixels.
+// `print` moved by (dx, dy) pixels; counts the red pixels. Red that the print has itself (mountain folds)
+// is not the cut: left out.
 double share_on_print(const Rgb& over, const Rgb& print, int dx, int dy, int& reds) {
   constexpr int kReach = 2;
   int near = 0;
   reds = 0;
   for (int y = kReach; y + kReach < over.h; ++y)
     for (int x = kReach; x + kReach < over.w; ++x) {
-      if (!red(over.px(x, y))) continue;
+      if (!red(over.px(x, y)) || (x < print.w && y < print.h && red(print.px(x, y)))) continue;
       ++reds;
       bool found = false;
       for (int v = -kReach; v <= kReach && !found; ++v)
@@ -354,4 +356,31 @@ TEST(CliCut, TheOverlayShowsTheSimulatedCutOnTheLinesMakePrints) {
   r = run_foldkit(dir, {"cut", mesh(), "--dry-run", "--overlay", "o.svg"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_FALSE(fs::exists(dir / "o.svg"));
+}
+
+// Print-and-cut calibration end to end: an offset stored once by `calibrate --offset` is applied by a
+// later `cut --regmarks` (a new process), and the simulated device's cut, laid over the print, lies off
+// the printed lines by exactly that offset. 0.1 in is 15 px at the overlay's 150 dpi.
+TEST(CliCut, TheOverlayShowsTheCutMovedByTheStoredCalibrationOffset) {
+  const auto dir = foldkit::test::temp_dir("cli-overlay-offset");
+  const foldkit::test::ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
+  const std::vector<std::string> same{"--size", "80mm", "--regmarks", "-q"};
+  std::vector<std::string> make{"make", mesh(), "--no-guide", "--dpi", "150", "-o", "print.png"};
+  make.insert(make.end(), same.begin(), same.end());
+  std::vector<std::string> cut{"cut",       mesh(),     "--device",      "cameo4", "--dry-run",
+                               "--overlay", "over.png", "--fold-method", "none"};
+  cut.insert(cut.end(), same.begin(), same.end());
+  CliRun r = run_foldkit(dir, make);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_foldkit(dir, {"calibrate", "--device", "cameo4", "--offset", "0.1,-0.1in"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_foldkit(dir, cut);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE((r.out + r.err).find("cuts moved by +2.54, -2.54 mm"), std::string::npos) << r.out << r.err;
+  const Rgb print = read_image(dir / "print.png"), over = read_image(dir / "over.png");
+  ASSERT_EQ(over.w, print.w);
+  int reds = 0;
+  EXPECT_GE(share_on_print(over, print, 15, -15, reds), 0.98) << "the cut is the print moved by the offset";
+  EXPECT_GT(reds, 2000);
+  EXPECT_LT(share_on_print(over, print, 0, 0, reds), 0.8) << "the offset is visible beside the print";
 }

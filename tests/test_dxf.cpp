@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "dxf_reader.hpp"
+#include "foldkit/devices/render.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
 #include "test_paths.hpp"
@@ -26,58 +31,8 @@ using foldkit::devices::DxfOptions;
 
 namespace {
 
-// The file as (code, value) pairs, so tests look at what a reader sees rather than at text layout.
-struct Group {
-  int code;
-  std::string value;
-};
-
-std::vector<Group> parse(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<Group> out;
-  std::string code, value;
-  while (std::getline(in, code) && std::getline(in, value))
-    out.push_back({std::stoi(code), value});
-  return out;
-}
-
-// The header variable `name`'s first value.
-std::string header_value(const std::vector<Group>& g, const std::string& name) {
-  for (std::size_t i = 0; i + 1 < g.size(); ++i)
-    if (g[i].code == 9 && g[i].value == name) return g[i + 1].value;
-  return "";
-}
-
-struct DxfPolyline {
-  std::string layer;
-  std::vector<Vec2> points;
-  bool closed = false;
-};
-
-std::vector<DxfPolyline> polylines(const std::vector<Group>& g) {
-  std::vector<DxfPolyline> out;
-  bool in_vertex = false;
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    if (g[i].code == 0) {
-      in_vertex = g[i].value == "VERTEX";
-      if (g[i].value == "POLYLINE") out.push_back({});
-      if (in_vertex) out.back().points.push_back({});
-      continue;
-    }
-    if (out.empty()) continue;
-    if (g[i].code == 8 && !in_vertex) out.back().layer = g[i].value;
-    if (g[i].code == 70 && !in_vertex) out.back().closed = (std::stoi(g[i].value) & 1) != 0;
-    if (in_vertex && g[i].code == 10) out.back().points.back().x = std::stod(g[i].value);
-    if (in_vertex && g[i].code == 20) out.back().points.back().y = std::stod(g[i].value);
-  }
-  return out;
-}
-
-std::vector<std::string> declared_layers(const std::vector<Group>& g) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i + 1 < g.size(); ++i)
-    if (g[i].code == 0 && g[i].value == "LAYER" && g[i + 1].code == 2) out.push_back(g[i + 1].value);
-  return out;
+std::vector<foldkit::test::DxfGroup> parse(const std::string& text) {
+  return foldkit::test::dxf_groups(text);
 }
 
 const devices::StrokeFont& font() {
@@ -92,15 +47,36 @@ std::string python() {
   return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
 }
 
+bool have_ezdxf() {
+  return std::system((python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string text_of(const std::vector<foldkit::test::DxfGroup>& groups) {
+  std::string out;
+  for (const auto& g : groups)
+    out += std::to_string(g.code) + "\n" + g.value + "\n";
+  return out;
+}
+
+// Runs tests/tools/dxf_vs_svg.py on one sheet's pair: its exit code, and what it printed in `log`.
+int check_with_ezdxf(const fs::path& svg, const fs::path& dxf, std::string& log) {
+  const fs::path out = dxf.string() + ".log";
+  const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() + " " +
+                          svg.string() + " " + dxf.string() + " >" + out.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  log = slurp(out);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 }  // namespace
 
 TEST(Dxf, TheHeaderSaysMillimetresAndSpansThePageWithTheOriginAtTheTopLeft) {
   const Sheet s = test::two_piece_sheet();
   const auto g = parse(dxf_document(s, {&font()}));
-  EXPECT_EQ(header_value(g, "$ACADVER"), "AC1009");
-  EXPECT_EQ(header_value(g, "$INSUNITS"), "4");
-  EXPECT_EQ(header_value(g, "$MEASUREMENT"), "1");
-  EXPECT_EQ(header_value(g, "$EXTMAX"), std::to_string(static_cast<int>(s.size_mm.x)));
+  EXPECT_EQ(foldkit::test::dxf_header_value(g, "$ACADVER"), "AC1009");
+  EXPECT_EQ(foldkit::test::dxf_header_value(g, "$INSUNITS"), "4");
+  EXPECT_EQ(foldkit::test::dxf_header_value(g, "$MEASUREMENT"), "1");
+  EXPECT_EQ(foldkit::test::dxf_header_value(g, "$EXTMAX"), std::to_string(static_cast<int>(s.size_mm.x)));
   EXPECT_EQ(g.back().value, "EOF");
 }
 
@@ -108,13 +84,13 @@ TEST(Dxf, EveryNamedLayerIsDeclaredEvenWhenEmpty) {
   Sheet s;
   s.size_mm = {210, 297};
   s.paths.push_back(test::rect_path(PathRole::Cut, {10, 10}, {20, 20}));
-  const auto layers = declared_layers(parse(dxf_document(s, {})));
+  const auto layers = foldkit::test::dxf_declared_layers(parse(dxf_document(s, {})));
   EXPECT_EQ(layers, (std::vector<std::string>{"CUT", "MOUNTAIN", "VALLEY", "TAB", "LABEL", "REGMARK"}));
 }
 
 TEST(Dxf, PathsBecomePolylinesOnTheirRolesLayerWithYFlipped) {
   const Sheet s = test::two_piece_sheet();
-  const auto lines = polylines(parse(dxf_document(s, {&font()})));
+  const auto lines = foldkit::test::dxf_polylines(parse(dxf_document(s, {&font()})));
   std::map<std::string, int> per_layer;
   for (const auto& l : lines)
     ++per_layer[l.layer];
@@ -137,7 +113,7 @@ TEST(Dxf, LabelsAreStrokesWhereTheTextIsPrinted) {
   Sheet s;
   s.size_mm = {100, 100};
   s.texts.push_back({"A1", {40, 60}, 5, 0, PathRole::Label, 0});
-  const auto lines = polylines(parse(dxf_document(s, {&font()})));
+  const auto lines = foldkit::test::dxf_polylines(parse(dxf_document(s, {&font()})));
   ASSERT_GE(lines.size(), 3u) << "A is three strokes, 1 at least one";
   for (const auto& l : lines) {
     EXPECT_EQ(l.layer, "LABEL");
@@ -161,11 +137,11 @@ TEST(Dxf, PartLettersAndSheetFurnitureAreLabelsAndHintsAreLeftOut) {
   s.texts.push_back({"B", {40, 60}, 8, 0, PathRole::Piece, 1});
   s.texts.push_back({"3", {20, 20}, 3, 0, PathRole::Hint, -1});
   const auto g = parse(dxf_document(s, {&font()}));
-  const auto lines = polylines(g);
+  const auto lines = foldkit::test::dxf_polylines(g);
   ASSERT_FALSE(lines.empty());
   for (const auto& l : lines)
     EXPECT_EQ(l.layer, "LABEL");
-  EXPECT_EQ(declared_layers(g).size(), 6u);
+  EXPECT_EQ(foldkit::test::dxf_declared_layers(g).size(), 6u);
 }
 
 TEST(Dxf, TextsWithoutAFontAreAnErrorNotSilentlyDropped) {
@@ -233,4 +209,75 @@ TEST(Dxf, EzdxfReadsTheSameOutlinesAsTheSvgOnEverySheetOfARealModel) {
     ++sheets;
   }
   EXPECT_GE(sheets, 2) << "the model was meant to take two sheets";
+}
+
+// The independent check must be able to fail: the same sheet's DXF, with one cut corner moved by 0.02 mm,
+// the units changed to inches, a label written as TEXT (which a program without the font shows as
+// nothing) or the page origin moved, is each reported.
+TEST(Dxf, TheEzdxfCheckRejectsADxfThatDiffersFromItsSvg) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf is not installed (bootstrap installs it)";
+  const fs::path dir = test::temp_dir("dxf-tamper");
+  Sheet s = test::two_piece_sheet();
+  test::add_regmarks(s, {10, 5}, {s.size_mm.x - 10, s.size_mm.y - 5});
+  devices::RenderOptions svg_options;
+  svg_options.format = "svg";
+  devices::render_sheets({s}, dir / "sheet.svg", svg_options);
+  const auto groups = foldkit::test::dxf_groups(dxf_document(s, {&font()}));
+  std::string log;
+  {
+    std::ofstream(dir / "good.dxf") << text_of(groups);
+    ASSERT_EQ(check_with_ezdxf(dir / "sheet.svg", dir / "good.dxf", log), 0) << log;
+    EXPECT_NE(log.find(" 0 problems"), std::string::npos) << log;
+  }
+  auto tampered = [&](const std::string& name, auto change, const std::string& complaint) {
+    auto g = groups;
+    change(g);
+    std::ofstream(dir / name) << text_of(g);
+    EXPECT_EQ(check_with_ezdxf(dir / "sheet.svg", dir / name, log), 1) << name << ": " << log;
+    EXPECT_NE(log.find(complaint), std::string::npos) << name << ": " << log;
+  };
+  tampered(
+      "moved.dxf",
+      [](auto& g) {
+        // The first VERTEX's x of the first polyline (a cut outline) by 0.02 mm.
+        for (std::size_t i = 0; i + 2 < g.size(); ++i)
+          if (g[i].code == 0 && g[i].value == "VERTEX") {
+            for (std::size_t j = i + 1; g[j].code != 0; ++j)
+              if (g[j].code == 10) {
+                g[j].value = std::to_string(std::stod(g[j].value) + 0.02);
+                return;
+              }
+          }
+      },
+      "cut: path starting at");
+  tampered(
+      "inches.dxf",
+      [](auto& g) {
+        for (std::size_t i = 0; i + 1 < g.size(); ++i)
+          if (g[i].code == 9 && g[i].value == "$INSUNITS") g[i + 1].value = "1";
+      },
+      "$INSUNITS is 1");
+  tampered(
+      "text.dxf",
+      [](auto& g) {
+        // A TEXT entity just before the end of the ENTITIES section.
+        for (std::size_t i = 1; i < g.size(); ++i)
+          if (g[i].code == 0 && g[i].value == "ENDSEC" && i > 0) {
+            const std::vector<foldkit::test::DxfGroup> text = {
+                {0, "TEXT"}, {8, "LABEL"}, {10, "20"}, {20, "-20"}, {30, "0"}, {40, "3"}, {1, "A1"}};
+            if (std::any_of(g.begin(), g.begin() + static_cast<long>(i),
+                            [](const auto& x) { return x.code == 0 && x.value == "POLYLINE"; })) {
+              g.insert(g.begin() + static_cast<long>(i), text.begin(), text.end());
+              return;
+            }
+          }
+      },
+      "1 TEXT entities");
+  tampered(
+      "origin.dxf",
+      [](auto& g) {
+        for (std::size_t i = 0; i + 2 < g.size(); ++i)
+          if (g[i].code == 9 && g[i].value == "$EXTMIN") g[i + 2].value = "0";
+      },
+      "$EXTMIN is");
 }

@@ -12,6 +12,7 @@
 
 #include "cairo_image.hpp"
 #include "foldkit/devices/atomic_file.hpp"
+#include "foldkit/devices/cut_svg.hpp"
 #include "foldkit/devices/dxf.hpp"
 #include "foldkit/error.hpp"
 #include "render_internal.hpp"
@@ -26,6 +27,8 @@ constexpr const char* kReadmeName = "README.txt";
 // (A0 at 300 dpi is 139) keeps that near 1.2 GB; larger paper is refused before anything is drawn.
 constexpr double kMaxSheetPixels = 150e6;
 constexpr const char* kFilesHeading = "FILES";
+// Print Then Cut's area, 9.25 x 6.75 in (source [6] in the README).
+constexpr double kPrintThenCutLongMm = 9.25 * 25.4, kPrintThenCutShortMm = 6.75 * 25.4;
 
 using detail::ContextPtr;
 using detail::SurfacePtr;
@@ -82,6 +85,16 @@ std::vector<Part> sheet_parts(const Sheet& sheet) {
   return parts;
 }
 
+// Whether the part fits Print Then Cut's area in either orientation.
+bool fits_print_then_cut(const Part& part) {
+  const double w = part.box_mm.width(), h = part.box_mm.height();
+  return std::max(w, h) <= kPrintThenCutLongMm && std::min(w, h) <= kPrintThenCutShortMm;
+}
+
+std::string guide_file(const BundleOptions& o) {
+  return o.name + "-guide.pdf";
+}
+
 std::string part_file(const BundleOptions& o, std::size_t sheet, const Part& part) {
   return sheet_stem(o, sheet) + "-part-" + part.name + ".png";
 }
@@ -123,7 +136,7 @@ std::string part_png(const SurfacePtr& sheet_image, const Part& part, double dpi
 
 // File names the README of an earlier bundle in `dir` lists (empty when there is none).
 std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& readme,
-                                                 const std::string& stem_prefix) {
+                                                 const BundleOptions& o) {
   std::set<std::filesystem::path> names;
   std::ifstream in(readme);
   std::string line;
@@ -136,12 +149,13 @@ std::set<std::filesystem::path> listed_in_readme(const std::filesystem::path& re
     if (!in_files) continue;
     if (line.empty()) break;
     const std::string name = line.substr(0, line.find(' '));
-    // Only files this bundle would write (its own name, a sheet suffix, one of its types): a README
-    // edited by hand must never make us delete a user's file or anything outside the folder.
+    // Only files this bundle would write (its own name, a sheet suffix, one of its types, or its
+    // guide): a README edited by hand must never make us delete a user's file or anything outside
+    // the folder.
     const std::string ext = std::filesystem::path(name).extension().string();
-    if (name.rfind(stem_prefix, 0) == 0 && name.find('/') == std::string::npos &&
-        (ext == ".pdf" || ext == ".png" || ext == ".dxf" || ext == ".svg"))
-      names.insert(name);
+    const bool sheet_file = name.rfind(o.name + "-sheet-", 0) == 0 && name.find('/') == std::string::npos &&
+                            (ext == ".pdf" || ext == ".png" || ext == ".dxf" || ext == ".svg");
+    if (sheet_file || name == guide_file(o)) names.insert(name);
   }
   return names;
 }
@@ -159,17 +173,21 @@ Silhouette Studio (Basic edition opens DXF and PDF; SVG needs Designer edition o
   the top edge), so the lines land where NAME-sheet-N.pdf prints them. Each role is its own layer
   and colour: CUT black/white, MOUNTAIN red, VALLEY blue, TAB grey, LABEL green, REGMARK magenta.
   In the Send panel cut CUT, give MOUNTAIN and VALLEY a light score setting (or none), and do not
-  cut LABEL, TAB or REGMARK. To print and cut: print NAME-sheet-N.pdf at 100 % (not "fit to page"),
-  then either Studio's own registration marks or `foldkit cut MODEL --regmarks` (which applies the
-  offset stored by `foldkit calibrate`).
+  cut LABEL, TAB or REGMARK. Print and cut with Studio's own registration marks: with the DXF open,
+  import NAME-sheet-N.png, give it the page's size (listed above; the file says 300 dpi) and move
+  it to the page's top-left corner, under the lines; switch on registration marks (at least 10 mm
+  in from the edge [2]: no part may lie in their area), print from Studio at 100 % and cut.
+  Otherwise print NAME-sheet-N.pdf at 100 % (not "fit to page") and cut by hand, or with the
+  sheet's own marks if it has them (see the notes at the top).
 Cricut Design Space (Print Then Cut):
   Upload > the NAME-sheet-N-part-M.png files (transparent backgrounds: Design Space cuts around
   the outline of the image), keep them as "Print Then Cut" images, and set each one's width to the
-  width listed above so the print keeps its scale. SVG cut lines: upload NAME-sheet-N.svg as a cut
-  image (groups cut, mountain, valley: change the fold groups to Score).
+  width listed above so the print keeps its scale. Cut lines alone (blank card, no print): upload
+  NAME-sheet-N.svg as a cut image; its groups are the DXF's layers in the same colours: keep cut,
+  set mountain and valley to Score (or hide them), hide tab, label and regmark.
 Brother CanvasWorkspace:
-  Import NAME-sheet-N.svg (File > Import SVG); the groups carry the roles; set folds to a half cut or
-  to none and score by hand.
+  Import NAME-sheet-N.svg; its groups are the DXF's layers: cut the cut group,
+  set mountain and valley to a half cut or to none (score by hand), and delete tab, label, regmark.
 
 SIZE LIMITS THE PROGRAMS STATE
 (only figures with a source; where we found none we say so rather than guess)
@@ -185,8 +203,11 @@ Cricut Design Space
   - Print Then Cut page size is chosen in Settings > Load Type; the tutorial [3] recommends
     1.25 to 2.5 cm margins around the design for the printed sensor marks.
   - Mats 12 x 12 in and 12 x 24 in (Explore), Explore Air 2 cuts up to 11.5 x 23.5 in [5].
-  - Largest Print Then Cut image and upload file size: no source found (Design Space refuses an
-    image that is too large when you press Make; scale the part PNGs no larger than listed above).
+  - Print Then Cut prints and cuts within 9.25 x 6.75 in (235 x 171 mm) [6] (a summary in an
+    open-source project, not Cricut's own page): parts marked "larger than Print Then Cut" above
+    do not fit; make the model smaller or cut those parts from the DXF or SVG instead.
+  - Its printed sensor marks need about 14 mm of margin on every side [7] (a user's report).
+  - Upload file size limit: no source found.
 Brother CanvasWorkspace
   - SVG import size and file limits, mat sizes: no source found.
 
@@ -199,9 +220,79 @@ Sources
       https://github.com/Malacath-92/Proxy-PDF-Maker (Silhouette Studio and Cricut Design Space steps)
   [4] smart-silhouette.com, "Cut border", https://smart-silhouette.com/cut-border/
   [5] Wikipedia, "Cricut", https://en.wikipedia.org/wiki/Cricut (model comparison)
+  [6] piecepackr, issue 343 "Cricut cut line files" (comment of 2026-05-05),
+      https://github.com/piecepackr/piecepackr/issues/343
+  [7] MTGProxyPrinter, discussion 4, https://github.com/luziferius/MTGProxyPrinter/discussions/4
 )";
 
+// The files of the bundle, all complete before the first replaces anything, then the earlier
+// bundle's files this one no longer has removed. `dir` exists.
+std::vector<std::filesystem::path> write_into(const std::vector<Sheet>& sheets,
+                                              const std::filesystem::path& dir, const BundleOptions& options,
+                                              const std::vector<std::string>& notes) {
+  std::error_code ec;
+  const std::vector<BundleFile> listing = bundle_files(sheets, options);
+  const std::set<std::filesystem::path> earlier = listed_in_readme(dir / kReadmeName, options);
+
+  std::vector<AtomicFile> files;
+  files.reserve(listing.size());
+  auto open = [&](const std::string& name) -> std::ostream& {
+    files.emplace_back(dir / name);
+    return files.back().stream();
+  };
+  for (std::size_t i = 0; i < sheets.size(); ++i) {
+    const Sheet& s = sheets[i];
+    const std::string stem = sheet_stem(options, i);
+    std::string error;
+    if (!detail::write_pdf(open(stem + ".pdf"), {s}, options.render, stem, error))
+      throw OutputError((dir / (stem + ".pdf")).string(), error);
+    std::ostringstream png;
+    if (!detail::write_png(png, s, options.render, error))
+      throw OutputError((dir / (stem + ".png")).string(), error);
+    const std::string png_bytes = png.str();
+    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
+    open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
+    open(stem + ".svg") << cut_svg_document(s, {options.font}, (dir / (stem + ".svg")).string());
+
+    const SurfacePtr image = detail::decode_png(png_bytes);
+    if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
+      throw OutputError((dir / (stem + ".png")).string(), "cannot read back the sheet's print for its parts");
+    for (const Part& part : sheet_parts(s)) {
+      const std::string name = part_file(options, i, part);
+      open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
+    }
+  }
+  if (options.guide) {
+    const std::string name = guide_file(options);
+    std::string error;
+    if (!detail::write_pdf(open(name), {*options.guide}, options.render, options.name + " guide", error))
+      throw OutputError((dir / name).string(), error);
+  }
+  open(kReadmeName) << bundle_readme(listing, sheets, options, notes);
+
+  std::vector<std::filesystem::path> written;
+  for (AtomicFile& f : files) {
+    f.commit();
+    written.push_back(f.target());
+  }
+  // Only once the new bundle is complete: a sheet the earlier bundle had and this one has not would
+  // otherwise sit beside the new files as if it belonged to them.
+  for (const std::filesystem::path& old : earlier) {
+    if (std::none_of(listing.begin(), listing.end(), [&](const BundleFile& f) { return f.path == old; }))
+      std::filesystem::remove(dir / old, ec);
+  }
+  return written;
+}
+
 }  // namespace
+
+void check_bundle_sheet_size(Vec2 size_mm, double dpi, const std::string& name) {
+  // In doubles: a hostile paper size must not overflow an int before it is refused.
+  const double px_per_mm = dpi / kMmPerInch;
+  if (size_mm.x * px_per_mm * size_mm.y * px_per_mm <= kMaxSheetPixels) return;
+  throw OutputError(name, size_text(size_mm) + " is too large for a " + fixed(dpi, 0) +
+                              " dpi print in a bundle (at most A0)");
+}
 
 std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const BundleOptions& options) {
   std::vector<BundleFile> files;
@@ -217,7 +308,7 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
                                         size_text(s.size_mm) + ")"});
     files.push_back(
         {stem + ".dxf", n + "cut lines, DXF in mm, layers CUT MOUNTAIN VALLEY TAB LABEL REGMARK"});
-    files.push_back({stem + ".svg", n + "cut lines, SVG in mm, one group per role"});
+    files.push_back({stem + ".svg", n + "cut lines, SVG in mm, the DXF's lines and layers (groups)"});
     for (const Part& part : sheet_parts(s)) {
       const auto ppx = part_size_px(part, dpi);
       files.push_back(
@@ -226,9 +317,12 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
                size_text(part.box_mm.max - part.box_mm.min + Vec2{2 * kPartPadMm, 2 * kPartPadMm}) + " (" +
                std::to_string(ppx[0]) + " x " + std::to_string(ppx[1]) + " px), top-left at (" +
                fixed(part.box_mm.min.x - kPartPadMm, 1) + ", " + fixed(part.box_mm.min.y - kPartPadMm, 1) +
-               ") mm on the sheet"});
+               ") mm on the sheet" + (fits_print_then_cut(part) ? "" : "; larger than Print Then Cut's area"),
+           !fits_print_then_cut(part)});
     }
   }
+  if (options.guide)
+    files.push_back({guide_file(options), "assembly guide: which part goes where and in what order, PDF"});
   files.push_back({kReadmeName, "this file"});
   return files;
 }
@@ -264,68 +358,24 @@ std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets
   if (sheets.empty()) throw OutputError(dir.string(), "nothing to write: no sheets");
   if (!(std::isfinite(options.render.png_dpi) && options.render.png_dpi > 0))
     throw OutputError(dir.string(), "PNG resolution must be a positive number of dots per inch");
-  for (std::size_t i = 0; i < sheets.size(); ++i) {
-    // In doubles: a hostile paper size must not overflow an int before it is refused.
-    const double px_per_mm = options.render.png_dpi / kMmPerInch;
-    const Vec2 size = sheets[i].size_mm;
-    if (!(size.x * px_per_mm * size.y * px_per_mm <= kMaxSheetPixels))
-      throw OutputError(dir.string(), "sheet " + std::to_string(i + 1) + " (" + size_text(sheets[i].size_mm) +
-                                          ") is too large for a " + fixed(options.render.png_dpi, 0) +
-                                          " dpi print in a bundle (at most A0)");
-  }
+  for (std::size_t i = 0; i < sheets.size(); ++i)
+    check_bundle_sheet_size(sheets[i].size_mm, options.render.png_dpi,
+                            dir.string() + ": sheet " + std::to_string(i + 1));
   std::error_code ec;
+  bool created = false;
   if (!std::filesystem::is_directory(dir, ec)) {
     if (std::filesystem::exists(dir, ec)) throw OutputError(dir.string(), "exists and is not a folder");
     if (!std::filesystem::create_directory(dir, ec))
       throw OutputError(dir.string(), "cannot create the folder: " + ec.message());
+    created = true;
   }
-  const std::vector<BundleFile> listing = bundle_files(sheets, options);
-  const std::set<std::filesystem::path> earlier =
-      listed_in_readme(dir / kReadmeName, options.name + "-sheet-");
-
-  std::vector<AtomicFile> files;
-  files.reserve(listing.size());
-  auto open = [&](const std::string& name) -> std::ostream& {
-    files.emplace_back(dir / name);
-    return files.back().stream();
-  };
-  const double cap_ratio = detail::cap_height_ratio(options.render.font_family);
-  for (std::size_t i = 0; i < sheets.size(); ++i) {
-    const Sheet& s = sheets[i];
-    const std::string stem = sheet_stem(options, i);
-    std::string error;
-    if (!detail::write_pdf(open(stem + ".pdf"), {s}, options.render, stem, error))
-      throw OutputError((dir / (stem + ".pdf")).string(), error);
-    std::ostringstream png;
-    if (!detail::write_png(png, s, options.render, error))
-      throw OutputError((dir / (stem + ".png")).string(), error);
-    const std::string png_bytes = png.str();
-    open(stem + ".png") << detail::with_resolution(png_bytes, options.render.png_dpi);
-    open(stem + ".dxf") << dxf_document(s, {options.font}, (dir / (stem + ".dxf")).string());
-    detail::write_svg(open(stem + ".svg"), s, options.render, cap_ratio);
-
-    const SurfacePtr image = detail::decode_png(png_bytes);
-    if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
-      throw OutputError((dir / (stem + ".png")).string(), "cannot read back the sheet's print for its parts");
-    for (const Part& part : sheet_parts(s)) {
-      const std::string name = part_file(options, i, part);
-      open(name) << part_png(image, part, options.render.png_dpi, (dir / name).string());
-    }
+  try {
+    return write_into(sheets, dir, options, notes);
+  } catch (...) {
+    // A failed first bundle leaves no folder behind (its files removed themselves): nothing new at all.
+    if (created) std::filesystem::remove(dir, ec);  // only removes it when empty
+    throw;
   }
-  open(kReadmeName) << bundle_readme(listing, sheets, options, notes);
-
-  std::vector<std::filesystem::path> written;
-  for (AtomicFile& f : files) {
-    f.commit();
-    written.push_back(f.target());
-  }
-  // Only once the new bundle is complete: a sheet the earlier bundle had and this one has not would
-  // otherwise sit beside the new files as if it belonged to them.
-  for (const std::filesystem::path& old : earlier) {
-    if (std::none_of(listing.begin(), listing.end(), [&](const BundleFile& f) { return f.path == old; }))
-      std::filesystem::remove(dir / old, ec);
-  }
-  return written;
 }
 
 }  // namespace foldkit::devices

@@ -25,25 +25,6 @@ constexpr int kColourDefault = 7;        // AutoCAD colour index: white on black
 constexpr PathRole kNamedRoles[] = {PathRole::Cut, PathRole::Mountain, PathRole::Valley,
                                     PathRole::Tab, PathRole::Label,    PathRole::RegMark};
 
-// Colours as the SVG and PDF draw the roles (AutoCAD index nearest to each), so a user who picks
-// lines by colour in the cutting program sees the same choice as on the print preview.
-int layer_colour(PathRole role) {
-  switch (role) {
-    case PathRole::Mountain:
-      return 1;  // red
-    case PathRole::Valley:
-      return 5;  // blue
-    case PathRole::Tab:
-      return 8;  // grey
-    case PathRole::Label:
-      return 3;  // green: apart from the black cut lines
-    case PathRole::RegMark:
-      return 6;  // magenta
-    default:
-      return kColourDefault;
-  }
-}
-
 // 0.1 µm, locale-independent, trailing zeros dropped.
 std::string num(double v) {
   if (std::abs(v) < 5e-5) v = 0;
@@ -83,41 +64,6 @@ class GroupWriter {
   std::ostream& out_;
 };
 
-struct Polyline {
-  std::string layer;
-  std::vector<Vec2> points_dxf;
-  bool closed = false;
-};
-
-std::vector<Polyline> collect(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
-  std::vector<Polyline> out;
-  auto add = [&](const std::string& layer, const std::vector<Vec2>& pts, bool closed,
-                 const std::string& what) {
-    if (layer.empty() || pts.size() < 2) return;
-    Polyline pl{layer, {}, closed};
-    pl.points_dxf.reserve(pts.size());
-    for (Vec2 p : pts) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        throw OutputError(name, what + " has a point that is not a number");
-      pl.points_dxf.push_back(dxf_point(p));
-    }
-    out.push_back(std::move(pl));
-  };
-  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
-    const Path& p = sheet.paths[i];
-    add(dxf_layer(p.role), p.points_mm, p.closed,
-        std::string(role_name(p.role)) + " path " + std::to_string(i + 1));
-  }
-  for (const Text& t : sheet.texts) {
-    const std::string layer = dxf_layer(t.role);
-    if (layer.empty() || t.text.empty()) continue;
-    if (!options.font) throw OutputError(name, "cannot write the labels: no stroke font loaded");
-    for (const auto& stroke : text_strokes(*options.font, t))
-      add(layer, stroke, false, "text \"" + t.text + "\"");
-  }
-  return out;
-}
-
 void write_header(GroupWriter& g, Vec2 size_mm) {
   g.code(0, "SECTION");
   g.code(2, "HEADER");
@@ -136,7 +82,7 @@ void write_header(GroupWriter& g, Vec2 size_mm) {
   g.code(0, "ENDSEC");
 }
 
-void write_tables(GroupWriter& g, const std::vector<std::pair<std::string, int>>& layers) {
+void write_tables(GroupWriter& g, const std::vector<std::string>& layers) {
   g.code(0, "SECTION");
   g.code(2, "TABLES");
   g.code(0, "TABLE");
@@ -153,31 +99,31 @@ void write_tables(GroupWriter& g, const std::vector<std::pair<std::string, int>>
   g.code(0, "TABLE");
   g.code(2, "LAYER");
   g.code(70, static_cast<int>(layers.size()));
-  for (const auto& [layer, colour] : layers) {
+  for (const std::string& layer : layers) {
     g.code(0, "LAYER");
     g.code(2, layer);
     g.code(70, 0);
-    g.code(62, colour);
+    g.code(62, dxf_layer_colour(layer));
     g.code(6, "CONTINUOUS");
   }
   g.code(0, "ENDTAB");
   g.code(0, "ENDSEC");
 }
 
-void write_entities(GroupWriter& g, const std::vector<Polyline>& lines) {
+void write_entities(GroupWriter& g, const std::vector<CutLine>& lines) {
   g.code(0, "SECTION");
   g.code(2, "ENTITIES");
-  for (const Polyline& pl : lines) {
+  for (const CutLine& pl : lines) {
     g.code(0, "POLYLINE");
     g.code(8, pl.layer);
     g.code(66, 1);  // vertices follow
     g.point(10, {0, 0});
     g.real(30, 0);
     g.code(70, pl.closed ? kPolylineClosed : 0);
-    for (Vec2 p : pl.points_dxf) {
+    for (Vec2 p : pl.points_mm) {
       g.code(0, "VERTEX");
       g.code(8, pl.layer);
-      g.point(10, p);
+      g.point(10, dxf_point(p));
       g.real(30, 0);
     }
     g.code(0, "SEQEND");
@@ -202,19 +148,37 @@ Vec2 dxf_point(Vec2 sheet_mm) {
   return {sheet_mm.x, -sheet_mm.y};
 }
 
-std::string dxf_document(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
-  const Vec2 size = sheet.size_mm;
-  if (!(std::isfinite(size.x) && std::isfinite(size.y) && size.x > 0 && size.y > 0))
-    throw OutputError(name, "the sheet has no valid size");
-  const std::vector<Polyline> lines = collect(sheet, options, name);
+std::vector<CutLine> cut_lines(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
+  std::vector<CutLine> out;
+  auto add = [&](const std::string& layer, const std::vector<Vec2>& pts, bool closed,
+                 const std::string& what) {
+    if (layer.empty() || pts.size() < 2) return;
+    for (Vec2 p : pts)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw OutputError(name, what + " has a point that is not a number");
+    out.push_back({layer, pts, closed});
+  };
+  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
+    const Path& p = sheet.paths[i];
+    add(dxf_layer(p.role), p.points_mm, p.closed,
+        std::string(role_name(p.role)) + " path " + std::to_string(i + 1));
+  }
+  for (const Text& t : sheet.texts) {
+    const std::string layer = dxf_layer(t.role);
+    if (layer.empty() || t.text.empty()) continue;
+    if (!options.font) throw OutputError(name, "cannot write the labels: no stroke font loaded");
+    for (const auto& stroke : text_strokes(*options.font, t))
+      add(layer, stroke, false, "text \"" + t.text + "\"");
+  }
+  return out;
+}
 
-  std::vector<std::pair<std::string, int>> layers;
+std::vector<std::string> dxf_layers(const Sheet& sheet) {
+  std::vector<std::string> layers;
   auto declare = [&](PathRole role) {
     const std::string layer = dxf_layer(role);
-    if (layer.empty()) return;
-    for (const auto& l : layers)
-      if (l.first == layer) return;
-    layers.emplace_back(layer, layer_colour(role));
+    if (!layer.empty() && std::find(layers.begin(), layers.end(), layer) == layers.end())
+      layers.push_back(layer);
   };
   for (PathRole role : kNamedRoles)
     declare(role);
@@ -222,6 +186,26 @@ std::string dxf_document(const Sheet& sheet, const DxfOptions& options, const st
     declare(p.role);
   for (const Text& t : sheet.texts)
     declare(t.role);
+  return layers;
+}
+
+// Colours as the print draws the roles (AutoCAD index nearest to each), so a user who picks lines by
+// colour in the cutting program sees the same choice as on the print preview.
+int dxf_layer_colour(const std::string& layer) {
+  if (layer == "MOUNTAIN") return 1;  // red
+  if (layer == "VALLEY") return 5;    // blue
+  if (layer == "TAB") return 8;       // grey
+  if (layer == "LABEL") return 3;     // green: apart from the black cut lines
+  if (layer == "REGMARK") return 6;   // magenta
+  return kColourDefault;
+}
+
+std::string dxf_document(const Sheet& sheet, const DxfOptions& options, const std::string& name) {
+  const Vec2 size = sheet.size_mm;
+  if (!(std::isfinite(size.x) && std::isfinite(size.y) && size.x > 0 && size.y > 0))
+    throw OutputError(name, "the sheet has no valid size");
+  const std::vector<CutLine> lines = cut_lines(sheet, options, name);
+  const std::vector<std::string> layers = dxf_layers(sheet);
 
   std::ostringstream out;
   GroupWriter g(out);

@@ -19,13 +19,15 @@ struct BundleOptions {
   std::string name = "model";        ///< file stem: NAME-sheet-1.pdf, …
   RenderOptions render;              ///< styles; the PNGs are written at png_dpi (300 unless changed)
   const StrokeFont* font = nullptr;  ///< labels as strokes in the DXF (required when sheets have texts)
+  const Sheet* guide = nullptr;      ///< assembly guide, written as NAME-guide.pdf when given
   BundleOptions() { render.png_dpi = 300; }
 };
 
 /// One file of a bundle, as the README lists it.
 struct BundleFile {
-  std::filesystem::path path;  ///< inside the bundle directory
-  std::string what;            ///< one line for the README
+  std::filesystem::path path;                 ///< inside the bundle directory
+  std::string what;                           ///< one line for the README
+  bool too_large_for_print_then_cut = false;  ///< a part PNG beyond Print Then Cut's 9.25 x 6.75 in
 };
 
 /// The files of a bundle, in README order, without writing anything.
@@ -36,7 +38,13 @@ std::vector<BundleFile> bundle_files(const std::vector<Sheet>& sheets, const Bun
 std::string bundle_readme(const std::vector<BundleFile>& files, const std::vector<Sheet>& sheets,
                           const BundleOptions& options, const std::vector<std::string>& notes = {});
 
-/// Writes the bundle into `dir` (created when missing; its parent must exist). Every file is complete
+/// Throws OutputError (naming `name`) when a sheet of `size_mm` is too large for a bundle's print at
+/// `dpi`: more than 150 megapixels (A0 at 300 dpi is 139), as the print is held twice while its parts are
+/// cut out of it. write_bundle checks every sheet; a caller may check the paper before the work.
+void check_bundle_sheet_size(Vec2 size_mm, double dpi, const std::string& name);
+
+/// Writes the bundle into `dir` (created when missing, and removed again when a failure leaves it
+/// empty; its parent must exist). Every file is complete
 /// before the first replaces anything; files an earlier bundle listed in its README.txt that this one no
 /// longer has (a sheet fewer) are removed, nothing else in the folder is touched. Throws OutputError
 /// naming the file. Returns the files written, README.txt last.

@@ -31,6 +31,25 @@ std::string dxf_layer(PathRole role);
 /// The DXF point of a sheet point (sheet mm, y down): (x, -y), see the header comment.
 Vec2 dxf_point(Vec2 sheet_mm);
 
+/// One line as the cutting programs get it: its layer (dxf_layer) and its points in sheet mm (y down).
+struct CutLine {
+  std::string layer;
+  std::vector<Vec2> points_mm;
+  bool closed = false;
+};
+
+/// The lines of `sheet` that its DXF holds, in file order: every path on its role's layer (hints left
+/// out), every text as the pen's strokes. The cut-line SVG (cut_svg.hpp) draws the same list. Throws
+/// OutputError (naming `name`) for a non-finite point, or texts without options.font.
+std::vector<CutLine> cut_lines(const Sheet& sheet, const DxfOptions& options,
+                               const std::string& name = "sheet");
+
+/// The layers a file of `sheet` declares, in order: the six named layers always, then any other role's.
+std::vector<std::string> dxf_layers(const Sheet& sheet);
+
+/// The AutoCAD colour index of a layer (7 black/white for CUT and unknown layers).
+int dxf_layer_colour(const std::string& layer);
+
 /// The text of one sheet's DXF file. Throws OutputError (naming `name`) for a sheet without a valid
 /// size, a non-finite point, or texts without options.font.
 std::string dxf_document(const Sheet& sheet, const DxfOptions& options, const std::string& name = "sheet");
