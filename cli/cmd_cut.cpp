@@ -218,6 +218,9 @@ void setup_cut(CLI::App& app) {
     // the planner, before anything is sent.
     if (cmd->count("--regmark-square") == 0) marks.square_mm = device_marks.square_mm;
     marks.stroke_mm = device_marks.stroke_mm;
+    // Pen labels need the font: a missing one is found out before the pipeline, not after it.
+    std::optional<devices::StrokeFont> font;
+    if (args->labels) font = load_label_font();
     ProgressLine line(!args->quiet && !args->json);
     // The colour options move pieces (the bleed widens their spacing): taken so that a cut matches the
     // coloured sheet `make` printed with the same options.
@@ -229,8 +232,6 @@ void setup_cut(CLI::App& app) {
                       std::to_string(sheets.size()) + " sheet(s)",
                   ExitCode::Usage);
 
-    std::optional<devices::StrokeFont> font;
-    if (args->labels) font = load_label_font();
     devices::PlanOptions plan;
     plan.mat = args->mat;
     plan.draw_labels = args->labels;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -85,11 +86,12 @@ std::string remove_stale_files(const std::string& output, std::size_t sheet_coun
 }
 
 // DXF goes through its own writer (stroke-font labels, layers); everything else through Cairo.
+// `font` is the label font, loaded before the pipeline ran (required for DXF).
 std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
-                                                const devices::RenderOptions& render) {
+                                                const devices::RenderOptions& render,
+                                                const devices::StrokeFont* font) {
   if (render.format != "dxf") return devices::render_sheets(sheets, output, render);
-  const devices::StrokeFont font = load_label_font();
-  return devices::write_dxf_sheets(sheets, output, {&font});
+  return devices::write_dxf_sheets(sheets, output, {font});
 }
 
 // The bundle's file stem: the mesh's name with only characters every cutting program and file system
@@ -103,13 +105,12 @@ std::string bundle_name(const std::string& mesh) {
 
 std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const std::string& mesh,
                                                 const std::string& dir, const devices::RenderOptions& render,
-                                                double size_mm) {
-  const devices::StrokeFont font = load_label_font();
+                                                double size_mm, const devices::StrokeFont* font) {
   devices::BundleOptions options;
   options.name = bundle_name(mesh);
   options.render = render;
   options.render.png_dpi = 300;  // print resolution, whatever --dpi says for previews
-  options.font = &font;
+  options.font = font;
   char scale[64];
   std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
   return devices::write_bundle(sheets, dir, options, {"model: " + mesh + " at " + scale});
@@ -201,6 +202,10 @@ void setup_make(CLI::App& app) {
     layout::LayoutOptions layout_options = to_layout_options(args->layout);
     layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
     if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
+    // DXF labels are pen strokes: a missing font is found out before the pipeline, not after it.
+    std::optional<devices::StrokeFont> font;
+    if (format == "dxf" || !args->bundle.empty()) font = load_label_font();
+    const devices::StrokeFont* label_font = font ? &*font : nullptr;
     ProgressLine line(!args->quiet);
     PipelineRun run =
         load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
@@ -239,10 +244,10 @@ void setup_make(CLI::App& app) {
           // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
           std::vector<Sheet> pages = r.sheets;
           pages.push_back(guide);
-          files = write_sheets(pages, args->output, render);
+          files = write_sheets(pages, args->output, render, label_font);
           sheet_files = files.size();
         } else {
-          files = write_sheets(r.sheets, args->output, render);
+          files = write_sheets(r.sheets, args->output, render, label_font);
           sheet_files = files.size();
           std::filesystem::path guide_path = args->output;
           guide_path.replace_filename(guide_path.stem().string() + "-guide" +
@@ -251,13 +256,13 @@ void setup_make(CLI::App& app) {
           files.insert(files.end(), written.begin(), written.end());
         }
       } else {
-        files = write_sheets(r.sheets, args->output, render);
+        files = write_sheets(r.sheets, args->output, render, label_font);
         sheet_files = files.size();
       }
     }
     if (!args->bundle.empty()) {
       line.update("writing the bundle");
-      const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm);
+      const auto bundled = write_bundle(r.sheets, args->mesh, args->bundle, render, r.size_mm, label_font);
       files.insert(files.end(), bundled.begin(), bundled.end());
     }
     line.clear();
