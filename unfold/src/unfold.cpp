@@ -60,6 +60,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       so.constraints = constraints;
       const SearchResult r = search_unfold(
           ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight, constraints)), so, progress);
+      if (progress && options.close_slits) progress({"closing slits", r.steps, 0, 0, elapsed()});
       result.unfolding =
           flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
       result.method = "search";
@@ -79,6 +80,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
+      if (progress && options.close_slits) progress({"closing slits", r.generations, r.pieces, 0, elapsed()});
       result.unfolding =
           flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
       result.method = r.method;
