@@ -28,6 +28,7 @@
 #include "foldkit/error.hpp"
 #include "installed_data.hpp"
 #include "interrupt.hpp"
+#include "json_report.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "output_paths.hpp"
@@ -396,8 +397,8 @@ void setup_cut(CLI::App& app) {
       nlohmann::json js = nlohmann::json::array();
       for (const SheetReport& r : reports) {
         nlohmann::json j{{"target", r.target},
-                         {"bytes", r.bytes},
-                         {"strokes", r.stats.strokes},
+                         {"byte_count", r.bytes},
+                         {"stroke_count", r.stats.strokes},
                          {"cut_length_mm", r.stats.cut_length_mm},
                          {"travel_before_mm", r.stats.travel_before_mm},
                          {"travel_after_mm", r.stats.travel_after_mm},
@@ -407,11 +408,11 @@ void setup_cut(CLI::App& app) {
         if (r.simulated_travel_mm) j["simulated_travel_mm"] = *r.simulated_travel_mm;
         js.push_back(j);
       }
-      std::cout << nlohmann::json{{"file", args->mesh},
-                                  {"device", device.id},
-                                  {"media", media.id},
-                                  {"simulated", simulated},
-                                  {"sheets", js}}
+      std::cout << versioned({{"file", args->mesh},
+                              {"device", device.id},
+                              {"media", media.id},
+                              {"simulated", simulated},
+                              {"sheets", js}})
                        .dump(2)
                 << "\n";
       return;

@@ -21,6 +21,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/layout/guide.hpp"
 #include "installed_data.hpp"
+#include "json_report.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "output_paths.hpp"
@@ -53,10 +54,10 @@ const std::map<std::string, std::vector<double>>& fold_styles() {
 
 nlohmann::json stats_json(const layout::SheetStats& s) {
   return {{"coverage", s.coverage},
-          {"pieces", s.pieces},
-          {"tabs", s.tabs},
-          {"dropped_tabs", s.dropped_tabs},
-          {"labels", s.labels},
+          {"piece_count", s.pieces},
+          {"tab_count", s.tabs},
+          {"dropped_tab_count", s.dropped_tabs},
+          {"label_count", s.labels},
           {"min_label_mm", s.min_label_mm},
           {"piece_area_mm2", s.piece_area_mm2},
           {"tab_area_mm2", s.tab_area_mm2}};
@@ -287,9 +288,9 @@ void setup_make(CLI::App& app) {
         assembly.push_back(
             {{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
       nlohmann::json j{{"file", args->mesh},
-                       {"faces", u.num_faces()},
-                       {"pieces", u.piece_count},
-                       {"seams", u.seam_count()},
+                       {"face_count", u.num_faces()},
+                       {"piece_count", u.piece_count},
+                       {"seam_count", u.seam_count()},
                        {"method", run.unfolded.result.method},
                        {"size_mm", r.size_mm},
                        {"scale_mm_per_unit", r.scale_mm_per_unit},
@@ -297,20 +298,20 @@ void setup_make(CLI::App& app) {
                        {"sheet_count", r.sheets.size()},
                        {"sheets", sheets},
                        {"overall", stats_json(r.overall)},
-                       {"unfold_seconds", run.unfolded.result.seconds},
-                       {"layout_seconds", run.layout_seconds},
+                       {"unfold_s", run.unfolded.result.seconds},
+                       {"layout_s", run.layout_seconds},
                        {"outputs", outputs},
                        {"notes", notes},
                        {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
-                       {"labels_crossing_lines", r.label_audit.crossing_lines},
-                       {"guide_pages", guide_pages},
-                       {"labels_touching", r.label_audit.touching},
-                       {"labels_turned", r.label_audit.turned},
-                       {"letters_crossing_lines", r.label_audit.letters_crossing_lines},
-                       {"labels_without_room", r.labels_without_room},
+                       {"labels_crossing_lines_count", r.label_audit.crossing_lines},
+                       {"guide_page_count", guide_pages},
+                       {"labels_touching_count", r.label_audit.touching},
+                       {"labels_turned_count", r.label_audit.turned},
+                       {"letters_crossing_lines_count", r.label_audit.letters_crossing_lines},
+                       {"labels_without_room_count", r.labels_without_room},
                        {"dropped_tab_seams", r.dropped_tab_seams}};
-      if (!r.assembly.empty()) j["assembly"] = assembly;
-      std::cout << j.dump(2) << "\n";
+      if (!r.assembly.empty()) j["assembly_steps"] = assembly;
+      std::cout << versioned(j).dump(2) << "\n";
       return;
     }
     for (const auto& n : notes)
