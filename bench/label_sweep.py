@@ -41,12 +41,13 @@ def main(argv):
                 print('%-32s error: %s' % (name, run.stderr.strip()))
                 continue
             j = json.loads(run.stdout)
-            labels, bad = j['overall']['labels'], j['labels_crossing_lines'] + j['labels_touching']
+            labels = j['overall']['label_count']
+            bad = j['labels_crossing_lines_count'] + j['labels_touching_count']
             group = totals['lowpoly' if name.startswith('lowpoly') else 'mid']
             group[0] += labels
             group[1] += bad
-            print('%-32s %5d %6d %6d %6d %5.1f%%' % (name, j['faces'], labels, j['labels_crossing_lines'],
-                                                   j['labels_touching'], 100.0 * bad / max(labels, 1)),
+            print('%-32s %5d %6d %6d %6d %5.1f%%' % (name, j['face_count'], labels, j['labels_crossing_lines_count'],
+                                                   j['labels_touching_count'], 100.0 * bad / max(labels, 1)),
                   flush=True)
     for group, (labels, bad) in totals.items():
         print('%s: %d of %d labels cross a line or touch (%.1f%%)' % (

@@ -17,6 +17,7 @@
 #include "foldkit/layout/paper.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
+#include "json_report.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -152,31 +153,32 @@ void run_layout_bench(const LayoutBenchArgs& a) {
     json out{{"rows", json::array()}};
     for (const Row& r : rows) {
       json j{{"mesh", r.mesh},
-             {"faces", r.faces},
+             {"face_count", r.faces},
              {"size_mm", r.size_mm},
-             {"seconds", r.seconds},
-             {"cpu_seconds", r.cpu_seconds}};
+             {"wall_s", r.seconds},
+             {"cpu_s", r.cpu_seconds}};
       if (!r.error.empty()) {
         j["error"] = r.error;
       } else {
-        j.update({{"sheets", r.sheets},
-                  {"area_bound_sheets", r.bound},
-                  {"parts", r.parts},
+        j.update({{"sheet_count", r.sheets},
+                  {"area_bound_sheet_count", r.bound},
+                  {"part_count", r.parts},
                   {"coverage", r.coverage},
-                  {"seams", r.seams},
-                  {"seams_without_tab", r.no_tab}});
+                  {"seam_count", r.seams},
+                  {"seams_without_tab_count", r.no_tab}});
       }
       out["rows"].push_back(j);
     }
-    out["totals"] = {{"sheets", sheets},
-                     {"area_bound_sheets", bound},
-                     {"sheets_over_bound", ratio},
-                     {"runs_more_than_one_over", over},
+    out["totals"] = {{"sheet_count", sheets},
+                     {"area_bound_sheet_count", bound},
+                     {"sheets_over_bound_ratio", ratio},
+                     {"runs_more_than_one_over_count", over},
                      {"median_coverage", median(coverage)},
-                     {"no_tab_share_350_1000_at_150mm", share},
-                     {"seconds", seconds},
-                     {"cpu_seconds", cpu_seconds}};
-    std::cout << out.dump(2) << "\n";
+                     // over the runs of 350-1,000 faces at 150 mm
+                     {"seams_without_tab_fraction", share},
+                     {"wall_s", seconds},
+                     {"cpu_s", cpu_seconds}};
+    std::cout << versioned(out).dump(2) << "\n";
     return;
   }
   char no_tab[96] = "no mesh of 350-1,000 faces at 150 mm";

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -90,6 +91,17 @@ void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o
   }
 }
 
+// The options of the `number`th layout tried: its progress stages carry the number, so that a stage
+// seen again is seen as another layout's and the counts may start over.
+layout::LayoutOptions numbered(const layout::LayoutOptions& o, int number) {
+  layout::LayoutOptions n = o;
+  if (o.progress)
+    n.progress = [report = o.progress, number](const layout::LayoutProgress& p) {
+      report({"layout " + std::to_string(number) + ", " + p.stage, p.done, p.total});
+    };
+  return n;
+}
+
 }  // namespace
 
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
@@ -108,8 +120,9 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     c.hull_area = hull_area(c.parts.unfolding);
     return c;
   };
+  int layouts = 0;
   auto lay_out = [&](Candidate& c) {
-    c.layout = layout::layout_sheets(c.parts.unfolding, o);
+    c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o, ++layouts));
     c.sheets = sheets_with_pieces(*c.layout);
   };
   using Clock = std::chrono::steady_clock;
@@ -123,7 +136,7 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   // poorly; smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged
   // by packing it (the estimate), fewer sheets first, then fewer parts, then rounder parts.
   auto estimate = [&](Candidate& c) {
-    const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, rough);
+    const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough, ++layouts));
     c.sheets = sheets_with_pieces(r);
     return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   };

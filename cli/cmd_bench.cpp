@@ -29,6 +29,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "foldkit/unfold/unfolding.hpp"
+#include "json_report.hpp"
 #include "length_option.hpp"
 
 namespace foldkit::cli {
@@ -81,9 +82,9 @@ void run_one(const BenchArgs& a) {
     opt.threads = a.threads;
     const unfold::UnfoldResult r = unfold::unfold_mesh(loaded.mesh, opt);
     const auto problems = unfold::check_unfolding(loaded.mesh, r.unfolding);
-    j["faces"] = loaded.mesh.num_faces();
-    j["pieces"] = r.unfolding.piece_count;
-    j["seconds"] = r.seconds;
+    j["face_count"] = loaded.mesh.num_faces();
+    j["piece_count"] = r.unfolding.piece_count;
+    j["unfold_s"] = r.seconds;
     j["produced_by"] = r.method;
     j["valid"] = problems.empty();
     if (!problems.empty()) j["problem"] = problems.front();
@@ -234,7 +235,7 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
               << std::string(head.str().size(), '-') << std::endl;
   }
   for (const auto& [path, faces] : meshes) {
-    json row{{"mesh", path.filename().string()}, {"faces", faces}};
+    json row{{"mesh", path.filename().string()}, {"face_count", faces}};
     bool all_valid = true;
     std::ostringstream line;
     char b[256];
@@ -250,8 +251,8 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
       if (r.contains("error")) {
         std::snprintf(b, sizeof b, " | %-6s %4s %8s %6.0f", m.c_str(), "err", "-", c.peak_mb);
       } else {
-        std::snprintf(b, sizeof b, " | %-6s %4d %8.3f %6.1f", m.c_str(), r.value("pieces", -1),
-                      r.value("seconds", 0.0), c.peak_mb);
+        std::snprintf(b, sizeof b, " | %-6s %4d %8.3f %6.1f", m.c_str(), r.value("piece_count", -1),
+                      r.value("unfold_s", 0.0), c.peak_mb);
       }
       line << b;
     }
@@ -267,7 +268,8 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
         row["blender"] = {{"error", br.count("error") ? br.at("error") : "refused"}};
         std::snprintf(b, sizeof b, "%17s", "refused");
       } else {
-        row["blender"] = {{"pieces", std::stoi(br.at("pieces"))}, {"seconds", std::stod(br.at("seconds"))}};
+        row["blender"] = {{"piece_count", std::stoi(br.at("pieces"))},
+                          {"unfold_s", std::stod(br.at("seconds"))}};
         std::snprintf(b, sizeof b, "%11s %5s", br.at("pieces").c_str(), br.at("seconds").c_str());
       }
       blender = b;
@@ -278,10 +280,10 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
       if (sr.at("model") != model_of(path) || std::abs(sf - faces) > 0.1 * sf) continue;
       row["seed_table1"] = {
           {"model", sr.at("model")},
-          {"faces", sf},
-          {"pieces", {sr.at("n65"), sr.at("n70"), sr.at("n75")}},
-          {"seconds", {std::stod(sr.at("t65")), std::stod(sr.at("t70")), std::stod(sr.at("t75"))}},
-          {"mst_pieces", std::stoi(sr.at("mst_n"))}};
+          {"face_count", sf},
+          {"piece_counts", {std::stoi(sr.at("n65")), std::stoi(sr.at("n70")), std::stoi(sr.at("n75"))}},
+          {"unfold_s", {std::stod(sr.at("t65")), std::stod(sr.at("t70")), std::stod(sr.at("t75"))}},
+          {"mst_piece_count", std::stoi(sr.at("mst_n"))}};
       line << " | " << sr.at("model") << " " << sf << ": " << sr.at("n65") << "/" << sr.at("n70") << "/"
            << sr.at("n75") << " pcs in " << sr.at("t65") << "/" << sr.at("t70") << "/" << sr.at("t75")
            << " s";
@@ -301,28 +303,28 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
       ++n;
       if (r.contains("error")) continue;
       valid += r.value("valid", false) ? 1 : 0;
-      one += r.value("pieces", 0) == 1 ? 1 : 0;
+      one += r.value("piece_count", 0) == 1 ? 1 : 0;
       peak = std::max(peak, r.value("peak_mb", 0.0));
-      int f = row["faces"];
+      int f = row["face_count"];
       std::string band = f < 300     ? "<300"
                          : f <= 550  ? "300-550"
                          : f <= 1100 ? "~1000"
                          : f <= 2200 ? "~2000"
                                      : "~5000";
-      bands[band].push_back(r.value("seconds", 0.0));
+      bands[band].push_back(r.value("unfold_s", 0.0));
     }
-    json s{{"meshes", n}, {"one_piece", one}, {"valid", valid}, {"peak_mb", peak}};
+    json s{{"mesh_count", n}, {"one_piece_count", one}, {"valid_count", valid}, {"peak_mb", peak}};
     for (auto& [band, v] : bands)
-      s["median_seconds"][band] = median(v);
+      s["median_unfold_s"][band] = median(v);
     summary[m] = s;
   }
   if (a.json_out) {
-    std::cout << json{{"corpus", corpus.string()},
-                      {"max_faces", a.max_faces},
-                      {"time_limit_s", a.time_limit_s},
-                      {"seed", a.seed},
-                      {"rows", rows},
-                      {"summary", summary}}
+    std::cout << versioned({{"corpus", corpus.string()},
+                            {"max_face_count", a.max_faces},
+                            {"time_limit_s", a.time_limit_s},
+                            {"seed", a.seed},
+                            {"rows", rows},
+                            {"summary", summary}})
                      .dump(2)
               << "\n";
     return;
@@ -330,11 +332,12 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
   std::cout << std::string(head.str().size(), '-') << "\n";
   for (const auto& m : methods) {
     const json& s = summary[m];
-    std::cout << m << ": one piece " << s["one_piece"].get<int>() << "/" << s["meshes"].get<int>()
-              << ", valid (check_unfolding) " << s["valid"].get<int>() << "/" << s["meshes"].get<int>()
-              << ", peak " << fmt("%.1f", s["peak_mb"].get<double>()) << " MB, median s:";
-    if (s.contains("median_seconds"))
-      for (auto& [band, v] : s["median_seconds"].items())
+    std::cout << m << ": one piece " << s["one_piece_count"].get<int>() << "/" << s["mesh_count"].get<int>()
+              << ", valid (check_unfolding) " << s["valid_count"].get<int>() << "/"
+              << s["mesh_count"].get<int>() << ", peak " << fmt("%.1f", s["peak_mb"].get<double>())
+              << " MB, median s:";
+    if (s.contains("median_unfold_s"))
+      for (auto& [band, v] : s["median_unfold_s"].items())
         std::cout << " " << band << " " << fmt("%.3f", v.get<double>());
     std::cout << "\n";
   }

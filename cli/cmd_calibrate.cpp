@@ -23,6 +23,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/layout/calibration_page.hpp"
 #include "foldkit/layout/paper.hpp"
+#include "json_report.hpp"
 #include "limits.hpp"
 #include "profile_options.hpp"
 #include "user_config.hpp"
@@ -82,10 +83,10 @@ void show_offset(const CalibrateArgs& args, const devices::DeviceProfile& device
   const auto stored = devices::load_calibration(file, device.id);
   const Vec2 offset = stored ? stored->offset_mm : Vec2{0, 0};
   if (args.json) {
-    std::cout << nlohmann::json{{"device", device.id},
-                                {"file", file.string()},
-                                {"stored", stored.has_value()},
-                                {"offset_mm", {offset.x, offset.y}}}
+    std::cout << versioned({{"device", device.id},
+                            {"file", file.string()},
+                            {"stored", stored.has_value()},
+                            {"offset_mm", {offset.x, offset.y}}})
                      .dump(2)
               << "\n";
   } else if (stored) {
@@ -104,8 +105,7 @@ void store_offset(const CalibrateArgs& args, const devices::DeviceProfile& devic
     std::filesystem::remove(file, ec);
     if (ec) throw OutputError(file.string(), "cannot remove: " + ec.message());
     if (args.json)
-      std::cout << nlohmann::json{{"device", device.id}, {"file", file.string()}, {"offset_mm", {0, 0}}}.dump(
-                       2)
+      std::cout << versioned({{"device", device.id}, {"file", file.string()}, {"offset_mm", {0, 0}}}).dump(2)
                 << "\n";
     else
       std::printf("%s: print-and-cut offset removed (%s)\n", device.name.c_str(), file.string().c_str());
@@ -114,9 +114,8 @@ void store_offset(const CalibrateArgs& args, const devices::DeviceProfile& devic
   const Vec2 offset = parse_offset(args.offset);
   devices::save_calibration(file, {device.id, offset});
   if (args.json) {
-    std::cout << nlohmann::json{{"device", device.id},
-                                {"file", file.string()},
-                                {"offset_mm", {offset.x, offset.y}}}
+    std::cout << versioned(
+                     {{"device", device.id}, {"file", file.string()}, {"offset_mm", {offset.x, offset.y}}})
                      .dump(2)
               << "\n";
     return;
@@ -172,10 +171,13 @@ void print_report(const CalibrateArgs& args, const devices::DeviceProfile& devic
     nlohmann::json crosses = nlohmann::json::array();
     for (Vec2 c : page.crosses_mm)
       crosses.push_back({c.x, c.y});
-    std::cout << nlohmann::json{{"device", device.id},   {"pdf", f.pdf},
-                                {"job", f.job},          {"preview", f.preview},
-                                {"crosses_mm", crosses}, {"applied_offset_mm", {applied.x, applied.y}},
-                                {"bytes", bytes}}
+    std::cout << versioned({{"device", device.id},
+                            {"pdf", f.pdf},
+                            {"job", f.job},
+                            {"preview", f.preview},
+                            {"crosses_mm", crosses},
+                            {"applied_offset_mm", {applied.x, applied.y}},
+                            {"byte_count", bytes}})
                      .dump(2)
               << "\n";
     return;

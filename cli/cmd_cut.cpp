@@ -28,6 +28,7 @@
 #include "foldkit/error.hpp"
 #include "installed_data.hpp"
 #include "interrupt.hpp"
+#include "json_report.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "output_paths.hpp"
@@ -243,6 +244,9 @@ void setup_cut(CLI::App& app) {
     // the planner, before anything is sent.
     if (cmd->count("--regmark-square") == 0) marks.square_mm = device_marks.square_mm;
     marks.stroke_mm = device_marks.stroke_mm;
+    // Pen labels need the font: a missing one is found out before the pipeline, not after it.
+    std::optional<devices::StrokeFont> font;
+    if (args->labels) font = load_label_font();
     ProgressLine line(!args->quiet && !args->json);
     // The colour options move pieces (the bleed widens their spacing): taken so that a cut matches the
     // coloured sheet `make` printed with the same options.
@@ -254,8 +258,6 @@ void setup_cut(CLI::App& app) {
                       std::to_string(sheets.size()) + " sheet(s)",
                   ExitCode::Usage);
 
-    std::optional<devices::StrokeFont> font;
-    if (args->labels) font = load_label_font();
     devices::PlanOptions plan;
     plan.mat = args->mat;
     plan.draw_labels = args->labels;
@@ -420,8 +422,8 @@ void setup_cut(CLI::App& app) {
       nlohmann::json js = nlohmann::json::array();
       for (const SheetReport& r : reports) {
         nlohmann::json j{{"target", r.target},
-                         {"bytes", r.bytes},
-                         {"strokes", r.stats.strokes},
+                         {"byte_count", r.bytes},
+                         {"stroke_count", r.stats.strokes},
                          {"cut_length_mm", r.stats.cut_length_mm},
                          {"travel_before_mm", r.stats.travel_before_mm},
                          {"travel_after_mm", r.stats.travel_after_mm},
@@ -431,11 +433,11 @@ void setup_cut(CLI::App& app) {
         if (r.simulated_travel_mm) j["simulated_travel_mm"] = *r.simulated_travel_mm;
         js.push_back(j);
       }
-      std::cout << nlohmann::json{{"file", args->mesh},
-                                  {"device", device.id},
-                                  {"media", media.id},
-                                  {"simulated", simulated},
-                                  {"sheets", js}}
+      std::cout << versioned({{"file", args->mesh},
+                              {"device", device.id},
+                              {"media", media.id},
+                              {"simulated", simulated},
+                              {"sheets", js}})
                        .dump(2)
                 << "\n";
       return;

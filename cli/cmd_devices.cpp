@@ -15,6 +15,7 @@
 #include "foldkit/devices/usb_errors.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
+#include "json_report.hpp"
 #include "profile_options.hpp"
 
 namespace foldkit::cli {
@@ -99,20 +100,20 @@ void run_devices(const DevicesArgs& args) {
            {"protocol", devices::protocol_name(d.protocol)},
            {"vendor", d.usb_vendor ? nlohmann::json(hex4(d.usb_vendor)) : nlohmann::json()},
            {"product", d.usb_vendor ? nlohmann::json(hex4(d.usb_product)) : nlohmann::json()}});
-    j["usb"] = nlohmann::json::array();
+    j["usb_devices"] = nlohmann::json::array();
     for (const auto& f : found) {
       const auto* profile = profile_for(profiles, f.id.vendor, f.id.product);
-      j["usb"].push_back({{"vendor", hex4(f.id.vendor)},
-                          {"product", hex4(f.id.product)},
-                          {"model", f.id.model},
-                          {"known_model", f.known_model},
-                          {"bus", f.bus},
-                          {"address", f.address},
-                          {"access", access_name(f.access)},
-                          {"profile", profile ? nlohmann::json(profile->id) : nlohmann::json()}});
+      j["usb_devices"].push_back({{"vendor", hex4(f.id.vendor)},
+                                  {"product", hex4(f.id.product)},
+                                  {"model", f.id.model},
+                                  {"known_model", f.known_model},
+                                  {"bus", f.bus},
+                                  {"address", f.address},
+                                  {"access", access_name(f.access)},
+                                  {"profile", profile ? nlohmann::json(profile->id) : nlohmann::json()}});
     }
     j["usb_error"] = usb_problem ? nlohmann::json(*usb_problem) : nlohmann::json(nullptr);
-    std::cout << j.dump(2) << "\n";
+    std::cout << versioned(j).dump(2) << "\n";
     return;
   }
 

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/mesh_stats.hpp"
+#include "json_report.hpp"
 #include "length_option.hpp"
 
 namespace foldkit::cli {
@@ -66,39 +67,40 @@ struct InspectArgs {
 nlohmann::json to_json(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) {
   nlohmann::json j;
   j["file"] = loaded.mesh.name;
-  j["faces"] = s.faces;
-  j["original_faces"] = loaded.original_faces;
-  j["vertices"] = s.vertices;
-  j["edges"] = s.edges;
-  j["boundary_edges"] = s.boundary_edges;
-  j["boundary_loops"] = s.boundary_loops;
-  j["components"] = s.components;
+  j["face_count"] = s.faces;
+  j["original_face_count"] = loaded.original_faces;
+  j["vertex_count"] = s.vertices;
+  j["edge_count"] = s.edges;
+  j["boundary_edge_count"] = s.boundary_edges;
+  j["boundary_loop_count"] = s.boundary_loops;
+  j["component_count"] = s.components;
   j["genus"] = s.genus;
   j["euler_characteristic"] = s.euler_characteristic;
   j["closed"] = s.closed;
   j["orientable"] = s.orientable;
-  j["vertex_classes"] = {{"elliptic", s.elliptic_vertices},
-                         {"hyperbolic", s.hyperbolic_vertices},
-                         {"flat", s.flat_vertices},
-                         {"boundary", s.boundary_vertices}};
-  j["bounding_box"] = {{"min", {s.bbox_min.x, s.bbox_min.y, s.bbox_min.z}},
-                       {"max", {s.bbox_max.x, s.bbox_max.y, s.bbox_max.z}}};
-  j["surface_area"] = s.surface_area;
+  j["vertex_classes"] = {{"elliptic_count", s.elliptic_vertices},
+                         {"hyperbolic_count", s.hyperbolic_vertices},
+                         {"flat_count", s.flat_vertices},
+                         {"boundary_count", s.boundary_vertices}};
+  // In the file's own units, whatever they are: the suffix says so.
+  j["bounding_box"] = {{"min_units", {s.bbox_min.x, s.bbox_min.y, s.bbox_min.z}},
+                       {"max_units", {s.bbox_max.x, s.bbox_max.y, s.bbox_max.z}}};
+  j["surface_area_units2"] = s.surface_area;
   nlohmann::json comps = nlohmann::json::array();
   for (const auto& c : s.per_component)
-    comps.push_back({{"faces", c.faces},
-                     {"vertices", c.vertices},
-                     {"edges", c.edges},
-                     {"boundary_loops", c.boundary_loops},
+    comps.push_back({{"face_count", c.faces},
+                     {"vertex_count", c.vertices},
+                     {"edge_count", c.edges},
+                     {"boundary_loop_count", c.boundary_loops},
                      {"genus", c.genus},
                      {"closed", c.closed}});
-  j["per_component"] = comps;
+  j["components"] = comps;
   const ColourReport colour = colour_report(loaded.mesh);
   nlohmann::json materials = nlohmann::json::array();
   const std::vector<int> used = faces_per_material(loaded.mesh);
   for (std::size_t i = 0; i < loaded.mesh.materials.size(); ++i) {
     const auto& mat = loaded.mesh.materials[i];
-    nlohmann::json jm{{"name", mat.name}, {"colour", hex(mat.colour)}, {"faces", used[i]}};
+    nlohmann::json jm{{"name", mat.name}, {"colour", hex(mat.colour)}, {"face_count", used[i]}};
     if (!mat.texture.empty()) {
       jm["texture"] = mat.texture;
       jm["texture_found"] = mat.texture_found;
@@ -108,12 +110,12 @@ nlohmann::json to_json(const unfold::LoadedMesh& loaded, const unfold::MeshStats
     materials.push_back(jm);
   }
   j["materials"] = materials;
-  j["faces_with_texture_coordinates"] = colour.faces_with_uv;
+  j["faces_with_texture_coordinates_count"] = colour.faces_with_uv;
   j["textured_area_fraction"] = colour.uv_area_fraction;
-  j["textures_found"] = colour.textures_found;
-  j["textures_missing"] = colour.textures_missing;
+  j["textures_found_count"] = colour.textures_found;
+  j["textures_missing_count"] = colour.textures_missing;
   j["notes"] = loaded.notes;
-  return j;
+  return versioned(j);
 }
 
 std::string table(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) {

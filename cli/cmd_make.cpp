@@ -21,6 +21,7 @@
 #include "foldkit/error.hpp"
 #include "foldkit/layout/guide.hpp"
 #include "installed_data.hpp"
+#include "json_report.hpp"
 #include "layout_options.hpp"
 #include "limits.hpp"
 #include "output_paths.hpp"
@@ -53,10 +54,10 @@ const std::map<std::string, std::vector<double>>& fold_styles() {
 
 nlohmann::json stats_json(const layout::SheetStats& s) {
   return {{"coverage", s.coverage},
-          {"pieces", s.pieces},
-          {"tabs", s.tabs},
-          {"dropped_tabs", s.dropped_tabs},
-          {"labels", s.labels},
+          {"piece_count", s.pieces},
+          {"tab_count", s.tabs},
+          {"dropped_tab_count", s.dropped_tabs},
+          {"label_count", s.labels},
           {"min_label_mm", s.min_label_mm},
           {"piece_area_mm2", s.piece_area_mm2},
           {"tab_area_mm2", s.tab_area_mm2}};
@@ -86,11 +87,12 @@ std::string remove_stale_files(const std::string& output, std::size_t sheet_coun
 }
 
 // DXF goes through its own writer (stroke-font labels, layers); everything else through Cairo.
+// `font` is the label font, loaded before the pipeline ran (required for DXF).
 std::vector<std::filesystem::path> write_sheets(const std::vector<Sheet>& sheets, const std::string& output,
-                                                const devices::RenderOptions& render) {
+                                                const devices::RenderOptions& render,
+                                                const devices::StrokeFont* font) {
   if (render.format != "dxf") return devices::render_sheets(sheets, output, render);
-  const devices::StrokeFont font = load_label_font();
-  return devices::write_dxf_sheets(sheets, output, {&font});
+  return devices::write_dxf_sheets(sheets, output, {font});
 }
 
 // The bundle's prints are for printing: 300 dpi, whatever --dpi says for previews.
@@ -107,13 +109,13 @@ std::string bundle_name(const std::string& mesh) {
 
 std::vector<std::filesystem::path> write_bundle(const std::vector<Sheet>& sheets, const Sheet* guide,
                                                 const std::string& mesh, const std::string& dir,
-                                                const devices::RenderOptions& render, double size_mm) {
-  const devices::StrokeFont font = load_label_font();
+                                                const devices::RenderOptions& render, double size_mm,
+                                                const devices::StrokeFont* font) {
   devices::BundleOptions options;
   options.name = bundle_name(mesh);
   options.render = render;
   options.render.png_dpi = kBundleDpi;
-  options.font = &font;
+  options.font = font;
   options.guide = guide;
   char scale[64];
   std::snprintf(scale, sizeof scale, "%.0f mm", size_mm);
@@ -226,6 +228,10 @@ void setup_make(CLI::App& app) {
     if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
     if (!args->bundle.empty())
       devices::check_bundle_sheet_size(layout_options.paper_mm, kBundleDpi, args->bundle);
+    // DXF labels are pen strokes: a missing font is found out before the pipeline, not after it.
+    std::optional<devices::StrokeFont> font;
+    if (format == "dxf" || !args->bundle.empty()) font = load_label_font();
+    const devices::StrokeFont* label_font = font ? &*font : nullptr;
     ProgressLine line(!args->quiet);
     PipelineRun run =
         load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
@@ -266,10 +272,10 @@ void setup_make(CLI::App& app) {
           // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
           std::vector<Sheet> pages = r.sheets;
           pages.push_back(*guide);
-          files = write_sheets(pages, args->output, render);
+          files = write_sheets(pages, args->output, render, label_font);
           sheet_files = files.size();
         } else {
-          files = write_sheets(r.sheets, args->output, render);
+          files = write_sheets(r.sheets, args->output, render, label_font);
           sheet_files = files.size();
           std::filesystem::path guide_path = args->output;
           guide_path.replace_filename(guide_path.stem().string() + "-guide" +
@@ -278,14 +284,14 @@ void setup_make(CLI::App& app) {
           files.insert(files.end(), written.begin(), written.end());
         }
       } else {
-        files = write_sheets(r.sheets, args->output, render);
+        files = write_sheets(r.sheets, args->output, render, label_font);
         sheet_files = files.size();
       }
     }
     if (!args->bundle.empty()) {
       line.update("writing the bundle");
-      const auto bundled =
-          write_bundle(r.sheets, guide ? &*guide : nullptr, args->mesh, args->bundle, render, r.size_mm);
+      const auto bundled = write_bundle(r.sheets, guide ? &*guide : nullptr, args->mesh, args->bundle, render,
+                                        r.size_mm, label_font);
       files.insert(files.end(), bundled.begin(), bundled.end());
     }
     line.clear();
@@ -310,9 +316,9 @@ void setup_make(CLI::App& app) {
         assembly.push_back(
             {{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
       nlohmann::json j{{"file", args->mesh},
-                       {"faces", u.num_faces()},
-                       {"pieces", u.piece_count},
-                       {"seams", u.seam_count()},
+                       {"face_count", u.num_faces()},
+                       {"piece_count", u.piece_count},
+                       {"seam_count", u.seam_count()},
                        {"method", run.unfolded.result.method},
                        {"size_mm", r.size_mm},
                        {"scale_mm_per_unit", r.scale_mm_per_unit},
@@ -320,20 +326,20 @@ void setup_make(CLI::App& app) {
                        {"sheet_count", r.sheets.size()},
                        {"sheets", sheets},
                        {"overall", stats_json(r.overall)},
-                       {"unfold_seconds", run.unfolded.result.seconds},
-                       {"layout_seconds", run.layout_seconds},
+                       {"unfold_s", run.unfolded.result.seconds},
+                       {"layout_s", run.layout_seconds},
                        {"outputs", outputs},
                        {"notes", notes},
                        {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
-                       {"labels_crossing_lines", r.label_audit.crossing_lines},
-                       {"guide_pages", guide_pages},
-                       {"labels_touching", r.label_audit.touching},
-                       {"labels_turned", r.label_audit.turned},
-                       {"letters_crossing_lines", r.label_audit.letters_crossing_lines},
-                       {"labels_without_room", r.labels_without_room},
+                       {"labels_crossing_lines_count", r.label_audit.crossing_lines},
+                       {"guide_page_count", guide_pages},
+                       {"labels_touching_count", r.label_audit.touching},
+                       {"labels_turned_count", r.label_audit.turned},
+                       {"letters_crossing_lines_count", r.label_audit.letters_crossing_lines},
+                       {"labels_without_room_count", r.labels_without_room},
                        {"dropped_tab_seams", r.dropped_tab_seams}};
-      if (!r.assembly.empty()) j["assembly"] = assembly;
-      std::cout << j.dump(2) << "\n";
+      if (!r.assembly.empty()) j["assembly_steps"] = assembly;
+      std::cout << versioned(j).dump(2) << "\n";
       return;
     }
     for (const auto& n : notes)

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "foldkit/devices/profile.hpp"
+#include "json_report.hpp"
 #include "profile_options.hpp"
 
 namespace foldkit::cli {
@@ -30,6 +31,25 @@ std::string usb(const devices::DeviceProfile& d) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "%04x:%04x", d.usb_vendor, d.usb_product);
   return buf;
+}
+
+// The USB id as the devices command gives it: four hex digits each, null without one.
+nlohmann::json usb_json(unsigned id, const devices::DeviceProfile& d) {
+  if (d.usb_vendor == 0) return nullptr;
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%04x", id);
+  return buf;
+}
+
+nlohmann::json tools_json(const devices::DeviceProfile& d) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const devices::Tool& t : d.tools)
+    out.push_back({{"kind", devices::tool_kind_name(t.kind)}, {"holder", t.holder}});
+  return out;
+}
+
+nlohmann::json settings_json(const devices::ToolSettings& s) {
+  return {{"force_gf", s.force_gf}, {"speed_mm_per_s", s.speed_mm_s}, {"pass_count", s.passes}};
 }
 
 std::string settings(const devices::ToolSettings& s) {
@@ -56,12 +76,13 @@ void setup_profiles(CLI::App& app) {
         devs.push_back({{"id", d.id},
                         {"name", d.name},
                         {"protocol", devices::protocol_name(d.protocol)},
-                        {"usb", usb(d)},
+                        {"vendor", usb_json(d.usb_vendor, d)},
+                        {"product", usb_json(d.usb_product, d)},
                         {"area_mm", {d.area_width_mm, d.area_max_length_mm}},
                         {"mats", mats},
-                        {"holders", d.holders},
-                        {"tools", tools(d)},
-                        {"regmarks", d.regmarks.supported},
+                        {"holder_count", d.holders},
+                        {"tools", tools_json(d)},
+                        {"regmarks_supported", d.regmarks.supported},
                         {"sources", d.sources},
                         {"file", d.file.string()}});
       }
@@ -69,15 +90,14 @@ void setup_profiles(CLI::App& app) {
         media.push_back({{"id", m.id},
                          {"name", m.name},
                          {"thickness_mm", m.thickness_mm},
-                         {"cut", settings(m.cut)},
-                         {"score", settings(m.score)},
-                         {"draw", settings(m.draw)},
+                         {"cut", settings_json(m.cut)},
+                         {"score", settings_json(m.score)},
+                         {"draw", settings_json(m.draw)},
                          {"file", m.file.string()}});
       nlohmann::json dirs = nlohmann::json::array();
       for (const auto& dir : cli_profile_dirs())
         dirs.push_back(dir.string());
-      std::cout << nlohmann::json{{"profile_dirs", dirs}, {"devices", devs}, {"media", media}}.dump(2)
-                << "\n";
+      std::cout << versioned({{"profile_dirs", dirs}, {"devices", devs}, {"media", media}}).dump(2) << "\n";
       return;
     }
     std::printf("Devices (--device):\n  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", "ID", "NAME", "LANG", "USB",

@@ -15,6 +15,7 @@
 #include "foldkit/devices/simulated_device.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/paper.hpp"
+#include "json_report.hpp"
 #include "limits.hpp"
 #include "profile_options.hpp"
 #include "sim_faults.hpp"
@@ -116,12 +117,12 @@ void setup_sim(CLI::App& app) {
       nlohmann::json j{{"file", args->file},
                        {"device", device.id},
                        {"checked_against", sim.model().from_profile ? "profile" : "model"},
-                       {"bytes", stream.size()},
-                       {"strokes", sim.strokes().size()},
+                       {"byte_count", stream.size()},
+                       {"stroke_count", sim.strokes().size()},
                        {"tool_down_mm", sim.down_length_mm()},
                        {"travel_mm", sim.travel_mm()}};
       if (!b.empty()) j["bounds_mm"] = {b.min.x, b.min.y, b.max.x, b.max.y};
-      std::cout << j.dump(2) << "\n";
+      std::cout << versioned(j).dump(2) << "\n";
       return;
     }
     std::printf("%s on the simulated %s (checked against %s): %zu strokes, tool down %.0f mm, travel %.0f mm",

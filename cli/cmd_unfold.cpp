@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
 #include "foldkit/error.hpp"
+#include "json_report.hpp"
 #include "layout_options.hpp"
 #include "output_paths.hpp"
 #include "pipeline.hpp"
@@ -168,17 +169,17 @@ void setup_unfold(CLI::App& app) {
       cut_edges += e.cut ? 1 : 0;
     if (args->json) {
       nlohmann::json j{{"file", args->mesh},
-                       {"faces", u.num_faces()},
-                       {"pieces", u.piece_count},
-                       {"cut_edges", cut_edges},
-                       {"seams", u.seam_count()},
+                       {"face_count", u.num_faces()},
+                       {"piece_count", u.piece_count},
+                       {"cut_edge_count", cut_edges},
+                       {"seam_count", u.seam_count()},
                        {"method", run.result.method},
-                       {"seconds", run.result.seconds},
+                       {"unfold_s", run.result.seconds},
                        {"notes", run.loaded.notes}};
       for (const auto& n : run.result.notes)
         j["notes"].push_back(n);
       if (!args->output.empty()) j["output"] = args->output;
-      std::cout << j.dump(2) << "\n";
+      std::cout << versioned(j).dump(2) << "\n";
     } else {
       for (const auto& n : run.loaded.notes)
         std::cerr << "note: " << n << "\n";

@@ -52,7 +52,15 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   // Bleed needs its share of the spacing between pieces.
   if (coloured)
     layout_options.spacing_mm = std::max(layout_options.spacing_mm, layout::fill_spacing_mm(*fills));
-  line.update("laying out " + std::to_string(run.unfolded.result.unfolding.piece_count) + " pieces");
+  const int pieces = run.unfolded.result.unfolding.piece_count;
+  const std::string laying_out =
+      "laying out " + std::to_string(pieces) + (pieces == 1 ? " piece: " : " pieces: ");
+  line.update(laying_out + "starting");
+  layout_options.progress = [&line, &laying_out](const layout::LayoutProgress& p) {
+    if (!line.due()) return;
+    const long percent = p.total > 0 ? 100 * p.done / p.total : 0;
+    line.update(laying_out + p.stage + " " + std::to_string(percent) + "%");
+  };
   const auto start = std::chrono::steady_clock::now();
   try {
     auto laid_out = choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, layout_options);

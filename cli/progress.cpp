@@ -16,14 +16,17 @@ ProgressLine::~ProgressLine() {
   clear();
 }
 
-void ProgressLine::update(std::string_view text) {
-  if (!enabled_) return;
-  auto now = std::chrono::steady_clock::now();
-  if (now - start_ < std::chrono::seconds(1)) return;
+bool ProgressLine::due() const {
+  if (!enabled_) return false;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - start_ < std::chrono::seconds(1)) return false;
   // A terminal gets at most ten redraws a second; a log file one line every five seconds.
-  if (shown_ && now - last_ < (tty_ ? std::chrono::milliseconds(100) : std::chrono::milliseconds(5000)))
-    return;
-  last_ = now;
+  return !shown_ || now - last_ >= (tty_ ? std::chrono::milliseconds(100) : std::chrono::milliseconds(5000));
+}
+
+void ProgressLine::update(std::string_view text) {
+  if (!due()) return;
+  last_ = std::chrono::steady_clock::now();
   std::string line(text);
   if (tty_) {
     std::string padded = line;

@@ -17,6 +17,8 @@ class ProgressLine {
   ~ProgressLine();
   /// Shows `text` (one line, no newline) if the work has run for over a second.
   void update(std::string_view text);
+  /// Whether update() would show a line now: callers that report often can skip building the text.
+  bool due() const;
   /// Removes the line from the terminal, so later messages start on a clean line.
   void clear();
 

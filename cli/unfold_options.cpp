@@ -93,8 +93,11 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
   if (check_loaded) check_loaded(run.loaded);
   auto report = [&line](const unfold::UnfoldProgress& p) {
     char text[160];
-    std::snprintf(text, sizeof text, "unfolding: %s, step %d, %d piece%s, %.1f s", p.stage.c_str(),
-                  p.iteration, p.pieces, p.pieces == 1 ? "" : "s", p.seconds);
+    char pieces[32] = "";  // not known between stages
+    if (p.pieces > 0)
+      std::snprintf(pieces, sizeof pieces, ", %d piece%s", p.pieces, p.pieces == 1 ? "" : "s");
+    std::snprintf(text, sizeof text, "unfolding: %s, step %d%s, %.1f s", p.stage.c_str(), p.iteration, pieces,
+                  p.seconds);
     line.update(text);
     return true;
   };

@@ -53,3 +53,22 @@ TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {
   o.split_oversized = false;
   EXPECT_EQ(cli::choose_parts(ex.mesh, ex.unfolding, o).unfolding.piece_count, ex.unfolding.piece_count);
 }
+
+TEST(ChooseParts, EachLayoutTriedReportsItsProgressUnderItsOwnNumber) {
+  const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  std::vector<std::string> stages;
+  o.progress = [&stages](const layout::LayoutProgress& p) {
+    if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+  };
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  ASSERT_GT(chosen.split_pieces, 0) << "spot at 150 mm is split: several layouts are tried";
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front(), "layout 1, drawing");
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "layout 2, packing"), stages.end());
+  // A stage name is never reused by a later layout: its counts may only rise.
+  std::vector<std::string> sorted = stages;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+}

@@ -21,16 +21,16 @@ TEST(CliBench, JsonRowsGivePiecesSecondsMemoryAndAValidCheckForEveryMethod) {
   const auto j = nlohmann::json::parse(run.out);
   ASSERT_EQ(j["rows"].size(), 2u);
   for (const auto& row : j["rows"]) {
-    EXPECT_EQ(row["faces"].get<int>(), 128);
+    EXPECT_EQ(row["face_count"].get<int>(), 128);
     EXPECT_TRUE(row["valid"].get<bool>()) << row.dump();
     const auto& search = row["results"]["search"];
-    EXPECT_EQ(search["pieces"].get<int>(), 1) << row.dump();
+    EXPECT_EQ(search["piece_count"].get<int>(), 1) << row.dump();
     EXPECT_GT(search["peak_mb"].get<double>(), 0.0);
-    EXPECT_GE(search["seconds"].get<double>(), 0.0);
-    EXPECT_GT(row["results"]["mst"]["pieces"].get<int>(), 1);
+    EXPECT_GE(search["unfold_s"].get<double>(), 0.0);
+    EXPECT_GT(row["results"]["mst"]["piece_count"].get<int>(), 1);
   }
-  EXPECT_EQ(j["summary"]["search"]["one_piece"].get<int>(), 2);
-  EXPECT_EQ(j["summary"]["mst"]["valid"].get<int>(), 2);
+  EXPECT_EQ(j["summary"]["search"]["one_piece_count"].get<int>(), 2);
+  EXPECT_EQ(j["summary"]["mst"]["valid_count"].get<int>(), 2);
 }
 
 TEST(CliBench, AMissingCorpusIsAnInputError) {

@@ -120,7 +120,7 @@ TEST(CliDevices, JsonListsEveryBuiltinModelWithHexIds) {
       listed |= m["vendor"] == hex4(id.vendor) && m["product"] == hex4(id.product);
     EXPECT_TRUE(listed) << id.model;
   }
-  EXPECT_TRUE(j["usb"].is_array());
+  EXPECT_TRUE(j["usb_devices"].is_array());
   bool cameo4 = false;
   for (const auto& m : j["known_models"])
     cameo4 |= m["vendor"] == "0b4d" && m["product"] == "1137" && m["model"] == "Silhouette Cameo 4";
@@ -183,8 +183,8 @@ TEST(CliDevicesUmockdev, JsonGivesTheCameo3AsAKnownAccessibleModel) {
       run(concat(umockdev_prefix(false), {foldkit::test::foldkit_binary().string(), "devices", "--json"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  ASSERT_EQ(j["usb"].size(), 1u) << r.out;
-  const auto& d = j["usb"][0];
+  ASSERT_EQ(j["usb_devices"].size(), 1u) << r.out;
+  const auto& d = j["usb_devices"][0];
   EXPECT_EQ(d["vendor"], "0b4d");
   EXPECT_EQ(d["product"], "112f");
   EXPECT_EQ(d["model"], "Silhouette Cameo 3");

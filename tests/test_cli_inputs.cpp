@@ -80,7 +80,7 @@ TEST(CliInputs, EveryTrickyCorpusFileIsInspectedSuccessfully) {
     const CliRun r = run_foldkit({"inspect", "--json", entry.path().string()});
     ASSERT_EQ(r.exit_code, 0) << entry.path() << ": " << r.err;
     const auto j = nlohmann::json::parse(r.out);
-    EXPECT_GT(j["faces"].get<int>(), 0);
+    EXPECT_GT(j["face_count"].get<int>(), 0);
     EXPECT_TRUE(j["orientable"].get<bool>());
   }
 }
@@ -93,14 +93,14 @@ TEST(CliInputs, TrickyFilesReportWhatTheLoaderRepaired) {
         run_foldkit({"inspect", "--json", (*shared / "tricky" / name).string()}).out);
   };
   const auto two = inspect("two_components.obj");
-  EXPECT_EQ(two["components"], 2);
+  EXPECT_EQ(two["component_count"], 2);
   EXPECT_EQ(two["genus"], 1);
   EXPECT_NE(two["notes"].dump().find("2 connected components: unfolded separately"), std::string::npos);
   const auto quads = inspect("quads_ngons.obj");
-  EXPECT_EQ(quads["faces"], 466);
+  EXPECT_EQ(quads["face_count"], 466);
   EXPECT_EQ(quads["genus"], 2);
   const auto hole = inspect("open_hole.obj");
-  EXPECT_EQ(hole["boundary_loops"], 1);
+  EXPECT_EQ(hole["boundary_loop_count"], 1);
   EXPECT_FALSE(hole["closed"].get<bool>());
   EXPECT_NE(inspect("flipped_faces.obj")["notes"].dump().find("re-oriented 5 faces"), std::string::npos);
   EXPECT_NE(inspect("nonmanifold_vertex.obj")["notes"].dump().find("split 1 non-manifold vertex"),
@@ -112,14 +112,14 @@ TEST(CliInputs, InspectJsonDescribesTheBundledBob) {
   const CliRun r = run_foldkit({"inspect", "--json", foldkit::test::example_mesh("bob_128.obj").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["faces"], 128);
+  EXPECT_EQ(j["face_count"], 128);
   EXPECT_EQ(j["genus"], 1);
-  EXPECT_EQ(j["components"], 1);
+  EXPECT_EQ(j["component_count"], 1);
   EXPECT_TRUE(j["closed"].get<bool>());
-  const int classes = j["vertex_classes"]["elliptic"].get<int>() +
-                      j["vertex_classes"]["hyperbolic"].get<int>() + j["vertex_classes"]["flat"].get<int>();
-  EXPECT_EQ(classes, j["vertices"].get<int>());
-  EXPECT_LT(j["bounding_box"]["min"][0].get<double>(), j["bounding_box"]["max"][0].get<double>());
+  const int classes = j["vertex_classes"]["elliptic_count"].get<int>() +
+                      j["vertex_classes"]["hyperbolic_count"].get<int>() + j["vertex_classes"]["flat_count"].get<int>();
+  EXPECT_EQ(classes, j["vertex_count"].get<int>());
+  EXPECT_LT(j["bounding_box"]["min_units"][0].get<double>(), j["bounding_box"]["max_units"][0].get<double>());
 }
 
 TEST(CliInputs, InspectTableNamesEveryQuantity) {
@@ -135,8 +135,8 @@ TEST(CliInputs, MaxFacesDecimatesBeforeInspecting) {
       {"inspect", "--json", "--max-faces", "120", foldkit::test::example_mesh("spot_350.obj").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_LE(j["faces"].get<int>(), 120);
-  EXPECT_EQ(j["original_faces"], 350);
+  EXPECT_LE(j["face_count"].get<int>(), 120);
+  EXPECT_EQ(j["original_face_count"], 350);
   EXPECT_EQ(j["genus"], 0);
 }
 

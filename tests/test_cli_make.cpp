@@ -51,7 +51,7 @@ TEST(CliMake, TheReadmeCommandWritesAPdfThatPopplerReads) {
   const int sheets = report["sheet_count"];
   ASSERT_GE(sheets, 1);
   const std::string info = shell("pdfinfo " + pdf.string());
-  ASSERT_EQ(report["guide_pages"].get<int>(), 1);
+  ASSERT_EQ(report["guide_page_count"].get<int>(), 1);
   EXPECT_NE(info.find("Pages:           " + std::to_string(sheets + 1)), std::string::npos) << info;
   EXPECT_NE(info.find("595.276 x 841.89 pts (A4)"), std::string::npos) << info;
   const std::string raster = shell("pdftoppm -r 20 -png " + pdf.string() + " " + (dir / "page").string());
@@ -87,17 +87,17 @@ TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {
   int pieces = 0, tabs = 0, dropped = 0;
   for (const auto& s : j["sheets"]) {
     // A sheet may hold only the glue-order list; one with pieces has some coverage.
-    EXPECT_EQ(s["coverage"].get<double>() > 0, s["pieces"].get<int>() > 0);
+    EXPECT_EQ(s["coverage"].get<double>() > 0, s["piece_count"].get<int>() > 0);
     EXPECT_LT(s["coverage"].get<double>(), 1);
-    pieces += s["pieces"].get<int>();
-    tabs += s["tabs"].get<int>();
-    dropped += s["dropped_tabs"].get<int>();
+    pieces += s["piece_count"].get<int>();
+    tabs += s["tab_count"].get<int>();
+    dropped += s["dropped_tab_count"].get<int>();
   }
-  EXPECT_EQ(pieces, j["pieces"].get<int>());
-  EXPECT_EQ(tabs, j["overall"]["tabs"].get<int>());
-  EXPECT_EQ(tabs + dropped, j["seams"].get<int>());
+  EXPECT_EQ(pieces, j["piece_count"].get<int>());
+  EXPECT_EQ(tabs, j["overall"]["tab_count"].get<int>());
+  EXPECT_EQ(tabs + dropped, j["seam_count"].get<int>());
   EXPECT_GE(j["overall"]["min_label_mm"].get<double>(), 1.8 - 1e-9);
-  EXPECT_EQ(j["assembly"].size(), j["seams"].get<std::size_t>());
+  EXPECT_EQ(j["assembly_steps"].size(), j["seam_count"].get<std::size_t>());
 }
 
 TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
@@ -106,7 +106,7 @@ TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
                                 (dir / "spot.pdf").string(), "--json", "--hints"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto j = nlohmann::json::parse(run.out);
-  ASSERT_EQ(j["parts"].size(), j["pieces"].get<std::size_t>());
+  ASSERT_EQ(j["parts"].size(), j["piece_count"].get<std::size_t>());
   std::vector<int> faces;
   int rank = 0;
   for (const auto& part : j["parts"]) {
@@ -117,16 +117,16 @@ TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
       faces.push_back(f);
   }
   std::sort(faces.begin(), faces.end());
-  ASSERT_EQ(static_cast<int>(faces.size()), j["faces"].get<int>()) << "every face in exactly one part";
+  ASSERT_EQ(static_cast<int>(faces.size()), j["face_count"].get<int>()) << "every face in exactly one part";
   for (std::size_t i = 0; i < faces.size(); ++i)
     ASSERT_EQ(faces[i], static_cast<int>(i));
-  for (const char* key : {"labels_crossing_lines", "labels_touching", "labels_turned"})
+  for (const char* key : {"labels_crossing_lines_count", "labels_touching_count", "labels_turned_count"})
     EXPECT_GE(j[key].get<int>(), 0) << key;
-  EXPECT_EQ(j["labels_turned"].get<int>(), 0);
+  EXPECT_EQ(j["labels_turned_count"].get<int>(), 0);
   // Notes are single lines; seam lists go to JSON fields.
   for (const auto& note : j["notes"])
     EXPECT_LT(note.get<std::string>().size(), 300u) << note;
-  EXPECT_EQ(j["dropped_tab_seams"].size(), j["overall"]["dropped_tabs"].get<std::size_t>());
+  EXPECT_EQ(j["dropped_tab_seams"].size(), j["overall"]["dropped_tab_count"].get<std::size_t>());
 }
 
 TEST(CliMake, PngPreviewsHaveThePixelSizeOfTheDpi) {

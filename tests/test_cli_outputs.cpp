@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "scoped_env.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -105,6 +107,35 @@ TEST(CliOutputs, ASymbolicLinkIsWrittenThroughAndStaysALink) {
   EXPECT_TRUE(fs::is_symlink(dir / "latest.pdf"));
   EXPECT_EQ(slurp(dir / "sheets" / "spot.pdf").substr(0, 5), "%PDF-");
   EXPECT_EQ(entries(dir / "sheets"), std::vector<std::string>{"spot.pdf"});
+}
+
+TEST(CliOutputs, AMissingLabelFontIsOneLineBeforeThePipelineAndNothingIsWritten) {
+  const fs::path dir = foldkit::test::temp_dir("outputs-no-font");
+  fs::create_directory(dir / "empty-share");
+  fs::create_directory(dir / "out");
+  const foldkit::test::ScopedEnv env("XDG_DATA_DIRS", (dir / "empty-share").string());
+  // A mesh the loader refuses (exit 3): the font error (exit 1) comes first only if it is checked
+  // before the pipeline loads anything.
+  std::ofstream(dir / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
+  const std::string out = (dir / "out").string();
+  const std::vector<std::vector<std::string>> commands = {
+      {"make", (dir / "broken.obj").string(), "-o", out + "/m.dxf"},
+      {"make", (dir / "broken.obj").string(), "--bundle", out + "/bundle"},
+      {"make", (dir / "broken.obj").string(), "-o", out + "/m.pdf", "--bundle", out + "/bundle"},
+      {"cut", (dir / "broken.obj").string(), "--device", "cameo4", "--dry-run", "--draw-labels", "--preview",
+       out + "/c.png"},
+  };
+  for (const auto& args : commands) {
+    const auto r = run_foldkit(args);
+    EXPECT_EQ(r.exit_code, 1) << args[0] << " " << args.back() << ": " << r.err;
+    EXPECT_NE(r.err.find("no Hershey font futural.jhf"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(entries(dir / "out").empty()) << ::testing::PrintToString(entries(dir / "out"));
+  }
+  // Outputs without pen labels do not need the font.
+  const auto pdf = run_foldkit({"make", foldkit::test::example_mesh("spot_128.obj").string(), "--size",
+                                "120mm", "-o", out + "/m.pdf", "-q"});
+  EXPECT_EQ(pdf.exit_code, 0) << pdf.err;
 }
 
 TEST(CliOutputs, DashWritesTheNetTheSheetsOrTheJobToStandardOutput) {

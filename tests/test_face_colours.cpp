@@ -313,8 +313,8 @@ TEST(FaceColours, InspectReportsMaterialsTexturesAndCoverage) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("\"materials\""), std::string::npos);
   EXPECT_NE(run.out.find("\"texture_found\": true"), std::string::npos);
-  EXPECT_NE(run.out.find("\"textures_missing\": 0"), std::string::npos);
-  EXPECT_NE(run.out.find("\"faces_with_texture_coordinates\": 12"), std::string::npos);
+  EXPECT_NE(run.out.find("\"textures_missing_count\": 0"), std::string::npos);
+  EXPECT_NE(run.out.find("\"faces_with_texture_coordinates_count\": 12"), std::string::npos);
   const fs::path dir = test::temp_dir("colour_inspect");
   fs::copy_file(colour_data("cube.obj"), dir / "cube.obj");
   fs::copy_file(colour_data("cube.mtl"), dir / "cube.mtl");

@@ -480,3 +480,36 @@ TEST(Layout, TheLabelRemedyIsDecidedByEdgesALabelCanSitBesideNotBySlivers) {
       << asked.labels_without_room << " of " << asked.overall.labels << " -> " << advised.labels_without_room
       << " of " << advised.overall.labels;
 }
+
+TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
+  const auto& ex = test::unfolded_example("fish_350.obj");
+  LayoutOptions o = at_size(200);
+  o.paper_mm = {148, 210};  // several sheets: packing has work to report
+  std::vector<LayoutProgress> seen;
+  o.progress = [&seen](const LayoutProgress& p) { seen.push_back(p); };
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  ASSERT_FALSE(seen.empty());
+  std::map<std::string, LayoutProgress> last;
+  std::vector<std::string> order;
+  for (const LayoutProgress& p : seen) {
+    EXPECT_GE(p.done, 0) << p.stage;
+    EXPECT_LE(p.done, p.total) << p.stage;
+    const auto it = last.find(p.stage);
+    if (it == last.end()) {
+      order.push_back(p.stage);
+    } else {
+      EXPECT_GE(p.done, it->second.done) << p.stage << ": the count fell";
+      EXPECT_EQ(p.total, it->second.total) << p.stage << ": the total moved";
+    }
+    last[p.stage] = p;
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"drawing", "packing", "labelling", "sheets"}));
+  for (const auto& [stage, p] : last)
+    EXPECT_EQ(p.done, p.total) << stage << " ends at its total";
+  EXPECT_GE(last["packing"].total, ex.unfolding.piece_count) << "one step per piece placed, at least";
+  EXPECT_EQ(last["sheets"].total, ex.unfolding.piece_count);
+  const long packing_reports =
+      std::count_if(seen.begin(), seen.end(), [](const LayoutProgress& p) { return p.stage == "packing"; });
+  EXPECT_GT(packing_reports, ex.unfolding.piece_count) << "packing reports as it places, not only at the end";
+  EXPECT_GT(r.sheets.size(), 1u);
+}

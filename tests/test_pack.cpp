@@ -144,3 +144,25 @@ TEST(Pack, TheLibnest2dEngineKeepsItemsApartAndInsideTheArea) {
   EXPECT_GE(r.sheet_count, 2);
   expect_valid(items, r, o);
 }
+
+TEST(Pack, ProgressCountsEveryPlacementAndEndsAtItsTotal) {
+  std::vector<PackItem> items;
+  for (int i = 0; i < 14; ++i)
+    items.push_back(rect(40 + i % 3 * 5, 30));
+  PackOptions o;
+  o.area_mm = {{0, 0}, {100, 100}};
+  std::vector<std::pair<long, long>> seen;
+  o.progress = [&seen](long done, long total) { seen.emplace_back(done, total); };
+  pack_items(items, o);
+  ASSERT_GT(seen.size(), items.size()) << "a report per placement, and the last";
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].second, seen.front().second) << "the total stays";
+    EXPECT_LE(seen[k].first, seen[k].second);
+    if (k > 0) {
+      EXPECT_GE(seen[k].first, seen[k - 1].first) << "no report goes back";
+    }
+  }
+  EXPECT_EQ(seen.front().first, 1);
+  EXPECT_EQ(seen.back().first, seen.back().second);
+  EXPECT_EQ(seen.back().second % static_cast<long>(items.size()), 0) << "items times orders";
+}

@@ -144,3 +144,21 @@ TEST(Slits, TheUnfoldingStageClosesThemUnlessAskedNotTo) {
   EXPECT_LT(2 * slits(a.unfolding), slits(b.unfolding));
   EXPECT_EQ(check_unfolding(mesh, a.unfolding), std::vector<std::string>{});
 }
+
+TEST(Slits, ProgressIsReportedPerSlitTriedWithCountsThatNeverFall) {
+  const Mesh mesh = load("spot_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  CutTree tree = solved_tree(ctx);
+  SlitOptions opt;
+  std::vector<std::pair<long, long>> seen;
+  opt.progress = [&seen](long done, long total) { seen.emplace_back(done, total); };
+  const SlitResult r = close_slits(tree, {}, opt);
+  ASSERT_GE(static_cast<int>(seen.size()), r.slits_before) << "every slit is tried once in the first pass";
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].second, static_cast<long>(opt.max_passes) * mesh.num_edges());
+    EXPECT_LT(seen[k].first, seen[k].second);
+    if (k > 0) {
+      EXPECT_GT(seen[k].first, seen[k - 1].first) << "report " << k << " went back";
+    }
+  }
+}

@@ -46,6 +46,10 @@ void validate(const LayoutOptions& o) {
                       format_mm(o.paper_mm.y) + " mm sheet");
 }
 
+void report(const LayoutOptions& o, const char* stage, long done, long total) {
+  if (o.progress) o.progress({stage, done, total});
+}
+
 // Sheet frame (y down, from the top-left) <-> packing frame (y up, from the bottom-left).
 Box2 flip_box(const Box2& b, double paper_h) {
   return Box2{{b.min.x, paper_h - b.max.y}, {b.max.x, paper_h - b.min.y}};
@@ -94,14 +98,19 @@ std::vector<Label> place_draft_labels(const Draft& d, const SeamTexts& texts) {
 }
 
 Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
+  constexpr long kSteps = 5;  // pieces, seams, folds, tabs, letters and labels
+  report(o, "drawing", 0, kSteps);
   Draft d;
   d.pieces = scaled_pieces(u, scale);
+  report(o, "drawing", 1, kSteps);
   d.seams = find_seams(u, d.pieces);
   d.numbers = number_seams(d.pieces, d.seams);
   if (o.hints) d.order = assembly_order(seam_loops(d.pieces, d.seams), d.seams);
+  report(o, "drawing", 2, kSteps);
   FoldOptions fold_options{o.flat_fold_rad, o.fold_inset_mm};
   for (const ScaledPiece& p : d.pieces)
     d.folds.push_back(fold_lines(u, p, fold_options));
+  report(o, "drawing", 3, kSteps);
 
   // Tabs in number order: numbers follow the outlines, so alternation works along each outline.
   std::vector<int> by_number(d.seams.size());
@@ -117,6 +126,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   }
   if (o.arrows) d.arrows = seam_arrows(d.pieces, d.seams);
 
+  report(o, "drawing", 4, kSteps);
   const std::vector<int> rank = letter_ranks(static_cast<int>(d.pieces.size()), d.seams, d.order);
   for (int r : rank)
     d.letters.push_back(piece_letter(r));
@@ -155,6 +165,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
     // where packing puts a mate on another sheet (settle_labels).
     d.labels = place_draft_labels(d, seam_texts(d));
   }
+  report(o, "drawing", kSteps, kSteps);
   return d;
 }
 
@@ -473,6 +484,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   pack_options.engine = o.packer;
   pack_options.max_sheets = max_sheets;
   pack_options.deadline = o.deadline;
+  if (o.progress) pack_options.progress = [&o](long done, long total) { report(o, "packing", done, total); };
   if (o.regmarks)
     for (const Box2& b : regmark_keep_out(o.paper_mm, o.regmark))
       pack_options.keep_out_mm.push_back(flip_box(b, paper_h));
@@ -491,7 +503,9 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   }
   attempt.complete = true;
   r.paper_height_mm = paper_h;
+  report(o, "labelling", 0, 1);
   settle_labels(d, o, items, packed);
+  report(o, "labelling", 1, 1);
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
     const PackPlacement& place = packed.placements[p];
     r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});
@@ -526,7 +540,9 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   std::vector<std::vector<const Tab*>> tabs_of(d.pieces.size());
   for (const auto& tab : d.tabs.tab_of_seam)
     if (tab) tabs_of[tab->piece].push_back(&*tab);
+  const long piece_count = static_cast<long>(d.pieces.size());
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    report(o, "sheets", static_cast<long>(p), piece_count);
     const PackPlacement& place = packed.placements[p];
     Sheet& sheet = r.sheets[place.sheet];
     SheetStats& st = r.sheet_stats[place.sheet];
@@ -583,6 +599,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     }
     if (p < d.piece_letters.size()) sheet.texts.push_back(letter_text(d.piece_letters[p], t, paper_h));
   }
+  report(o, "sheets", piece_count, piece_count);
   for (int s : d.tabs.dropped) {
     const SeamSide& side = d.seams[s].sides[0];
     if (side.piece >= 0) r.sheet_stats[packed.placements[side.piece].sheet].dropped_tabs += 1;

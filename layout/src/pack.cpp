@@ -326,6 +326,11 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
     girth[i] = box.width() + box.height();
   }
 
+  // Progress counts placements over every order tried: the three plain ones and the shaken ones.
+  const int shaken = shaken_orders(items.size(), options.shaken_orders);
+  const long most_placements = static_cast<long>(3 + shaken) * static_cast<long>(items.size());
+  long placements_done = 0;
+
   // One greedy pass in a given order. Returns the result and how many rows the last sheet uses.
   auto run = [&](const std::vector<int>& order) {
     PackResult result;
@@ -362,6 +367,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
       if (sheet + 1 == static_cast<int>(sheets.size())) last_lowest = std::min(last_lowest, spot.y);
       const Vec2 corner = grid_min + Vec2{cell * spot.x, cell * spot.y};
       result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
+      if (options.progress) options.progress(++placements_done, most_placements);
     }
     std::sort(result.unplaced.begin(), result.unplaced.end());
     result.sheet_count = static_cast<int>(sheets.size());
@@ -394,7 +400,6 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
   // seed: the same input always packs the same way.
   const long bound = reachable_sheets(rasters, empty.free_cells());
-  const int shaken = shaken_orders(items.size(), options.shaken_orders);
   std::uint64_t seed = kShakeSeed;
   for (int k = 0; k < shaken && best.unplaced.empty() && best.sheet_count > bound; ++k) {
     std::vector<double> key = area;
@@ -402,6 +407,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
       a *= std::exp2(2 * unit_random(seed) - 1);
     consider(key);
   }
+  if (options.progress) options.progress(most_placements, most_placements);
   return best;
 }
 

@@ -194,8 +194,11 @@ SlitResult close_slits(CutTree& tree, const EdgeConstraints& constraints, const 
   result.slits_before = count_slits(tree, options.min_gap_per_length);
   for (int pass = 0; pass < options.max_passes && !out_of_time(); ++pass) {
     int moves_this_pass = 0;
-    for (int c = 0; c < tree.mesh().num_edges() && !out_of_time(); ++c) {
+    const int edges = tree.mesh().num_edges();
+    for (int c = 0; c < edges && !out_of_time(); ++c) {
       if (closer.cost(c) <= 0) continue;
+      if (options.progress)
+        options.progress(static_cast<long>(pass) * edges + c, static_cast<long>(options.max_passes) * edges);
       const Move move = closer.best_move(c, out_of_time);
       if (move.cut < 0) continue;
       closer.apply(move);

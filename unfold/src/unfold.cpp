@@ -19,12 +19,21 @@ namespace {
 // The cuts `cut` with their slits closed where a move allows (slits.hpp).
 std::vector<char> without_slits(const UnfoldContext& ctx, const std::vector<char>& cut,
                                 const EdgeConstraints& constraints, const UnfoldOptions& options,
-                                double seconds_left) {
+                                double seconds_left, const ProgressFn& progress, double seconds_before) {
   if (!options.close_slits) return cut;
   CutTree tree(ctx, folds_from_cuts(cut));
   if (tree.overlap_count() > 0) return cut;
   SlitOptions so = options.slits;
   so.time_limit_s = std::clamp(seconds_left, 0.0, so.time_limit_s);
+  if (progress) {
+    const auto start = std::chrono::steady_clock::now();
+    so.progress = [&progress, start, seconds_before](long done, long total) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const long percent = total > 0 ? 100 * done / total : 0;
+      progress({"closing slits " + std::to_string(percent) + "%", static_cast<int>(done), 0, 0,
+                seconds_before + s});
+    };
+  }
   const SlitResult r = close_slits(tree, constraints, so);
   return r.moves > 0 ? tree.cut_flags() : cut;
 }
@@ -60,8 +69,9 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       so.constraints = constraints;
       const SearchResult r = search_unfold(
           ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight, constraints)), so, progress);
-      result.unfolding =
-          flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
+      if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
+      result.unfolding = flatten(mesh, without_slits(ctx, r.cut, constraints, options,
+                                                     options.time_limit_s - elapsed(), progress, elapsed()));
       result.method = "search";
       result.iterations = r.steps;
       if (!r.solved)
@@ -79,8 +89,9 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
-      result.unfolding =
-          flatten(mesh, without_slits(ctx, r.cut, constraints, options, options.time_limit_s - elapsed()));
+      if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
+      result.unfolding = flatten(mesh, without_slits(ctx, r.cut, constraints, options,
+                                                     options.time_limit_s - elapsed(), progress, elapsed()));
       result.method = r.method;
       result.iterations = r.generations;
       break;

@@ -3,6 +3,7 @@
 // matching edge numbers, optional direction arrows and assembly hints, packs everything onto sheets
 // and adds registration marks. Built from the small modules beside this header.
 #include <chrono>
+#include <functional>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -16,6 +17,15 @@
 #include "foldkit/unfold/unfolding.hpp"
 
 namespace foldkit::layout {
+
+/// How far a layout has come: `done` of `total` steps of `stage` ("drawing", "packing", "labelling",
+/// "sheets"). Within one stage `done` never falls and ends at `total`; a layout may go through its stages
+/// more than once (--fit tries several scales).
+struct LayoutProgress {
+  std::string stage;
+  long done = 0;
+  long total = 0;
+};
 
 struct LayoutOptions {
   /// Largest model dimension on paper, mm. Ignored when fit is set.
@@ -55,6 +65,8 @@ struct LayoutOptions {
   PackEngine packer = PackEngine::Raster;
   /// When set, layout stops here with a LayoutError ("stopped at the time limit …").
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// Called as the layout goes (from the calling thread, often: keep it cheap); may be empty.
+  std::function<void(const LayoutProgress&)> progress;
 };
 
 /// Figures for one sheet, or the whole layout.

@@ -6,6 +6,7 @@
 // so placed items never overlap and keep at least `spacing_mm` apart, and concave pieces can nest
 // into each other's bays and holes.
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -40,6 +41,9 @@ struct PackOptions {
   std::optional<int> max_sheets;
   /// When set, packing stops here with a LayoutError: no input makes it run unbounded.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// Called after each placement with the placements made and the most the packing can make (items
+  /// times the orders it may try; it ends at that count, also when it stops trying orders early).
+  std::function<void(long done, long total)> progress;
 };
 
 /// Where an item went: sheet index and the motion from the item's frame to the sheet frame.

@@ -5,6 +5,7 @@
 // vertices whose branch beyond turns by almost nothing makes a longer one, both sides touching along
 // several edges. Moving the cuts (cut a fold edge at the slit, fold a cut edge of the cycle that makes)
 // closes them; the leaves left are at the cone points (nose, ears, tips), where the wedge is wide.
+#include <functional>
 #include <vector>
 
 #include "foldkit/unfold/cut_tree.hpp"
@@ -21,6 +22,9 @@ struct SlitOptions {
   int max_passes = 6;
   /// Wall-clock budget; the tree is overlap-free after every move, so stopping early is safe.
   double time_limit_s = 5;
+  /// Called for each slit tried, with the edges looked at over all passes and the most there can be
+  /// (passes times edges); may be empty.
+  std::function<void(long done, long total)> progress;
 };
 
 struct SlitResult {
