@@ -227,9 +227,10 @@ pid_t spawn_foldkit(const fs::path& dir, const std::vector<std::string>& args) {
   return pid;
 }
 
-// Waits (bounded) until `dir` holds a hidden temporary file: the command is writing its output.
+// Waits (bounded) until `dir` holds a hidden temporary file: the command is writing its output. Up to
+// 2 minutes: on a loaded 2-core CI machine the pipeline before the first write took over 30 s once.
 bool wait_for_temporary(const fs::path& dir, pid_t pid) {
-  for (int i = 0; i < 1200; ++i) {
+  for (int i = 0; i < 4800; ++i) {
     if (has_hidden_temporary(dir)) return true;
     int status = 0;
     if (::waitpid(pid, &status, WNOHANG) == pid) return false;  // ended before writing anything

@@ -101,8 +101,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
   if (flat.non_planar_polygons > 0)
     result.notes.push_back(std::to_string(flat.non_planar_polygons) +
                            " polygon(s) not planar within the flat angle: folded along their diagonals");
-  if (int components = count_components(mesh); components > 1)
-    result.notes.push_back(std::to_string(components) + " connected components unfolded separately");
+  // Several connected components are the loader's note (it says they unfold separately): not repeated.
   result.seconds = elapsed();
   if (progress) progress({result.method, result.iterations, result.unfolding.piece_count, 0, result.seconds});
   return result;
