@@ -322,18 +322,28 @@ double share_on_print(const Rgb& over, const Rgb& print, int dx, int dy, int& re
 
 }  // namespace
 
+// `make --regmarks` writing print.png (150 dpi) and `cut --regmarks --dry-run` laying the simulated
+// Cameo 4's cut over it as over.png, with the same layout options. Folds print dashed: only the blade's
+// strokes, which follow solid lines, are compared.
+struct PrintAndCut {
+  std::vector<std::string> make, cut;
+};
+PrintAndCut print_and_cut_commands() {
+  const std::vector<std::string> same{"--size", "80mm", "--regmarks", "-q"};
+  PrintAndCut c{
+      {"make", mesh(), "--no-guide", "--dpi", "150", "-o", "print.png"},
+      {"cut", mesh(), "--device", "cameo4", "--dry-run", "--overlay", "over.png", "--fold-method", "none"}};
+  c.make.insert(c.make.end(), same.begin(), same.end());
+  c.cut.insert(c.cut.end(), same.begin(), same.end());
+  return c;
+}
+
 // Print-and-cut: `make --regmarks` prints the sheet, `cut --regmarks` with the same options cuts it; the
 // simulated device's cut, found through the printed marks and laid over the print, runs on the printed
 // cut lines (and would not, were the print 1 mm off).
 TEST(CliCut, TheOverlayShowsTheSimulatedCutOnTheLinesMakePrints) {
   const auto dir = foldkit::test::temp_dir("cli-overlay");
-  const std::vector<std::string> same{"--size", "80mm", "--regmarks", "-q"};
-  std::vector<std::string> make{"make", mesh(), "--no-guide", "--dpi", "150", "-o", "print.png"};
-  make.insert(make.end(), same.begin(), same.end());
-  // Folds print dashed: only the blade's strokes, which follow solid lines, are compared.
-  std::vector<std::string> cut{"cut",       mesh(),     "--device",      "cameo4", "--dry-run",
-                               "--overlay", "over.png", "--fold-method", "none"};
-  cut.insert(cut.end(), same.begin(), same.end());
+  const auto [make, cut] = print_and_cut_commands();
   CliRun r = run_foldkit(dir, make);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_foldkit(dir, cut);
@@ -364,12 +374,7 @@ TEST(CliCut, TheOverlayShowsTheSimulatedCutOnTheLinesMakePrints) {
 TEST(CliCut, TheOverlayShowsTheCutMovedByTheStoredCalibrationOffset) {
   const auto dir = foldkit::test::temp_dir("cli-overlay-offset");
   const foldkit::test::ScopedEnv xdg("XDG_CONFIG_HOME", (dir / "config").string());
-  const std::vector<std::string> same{"--size", "80mm", "--regmarks", "-q"};
-  std::vector<std::string> make{"make", mesh(), "--no-guide", "--dpi", "150", "-o", "print.png"};
-  make.insert(make.end(), same.begin(), same.end());
-  std::vector<std::string> cut{"cut",       mesh(),     "--device",      "cameo4", "--dry-run",
-                               "--overlay", "over.png", "--fold-method", "none"};
-  cut.insert(cut.end(), same.begin(), same.end());
+  const auto [make, cut] = print_and_cut_commands();
   CliRun r = run_foldkit(dir, make);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_foldkit(dir, {"calibrate", "--device", "cameo4", "--offset", "0.1,-0.1in"});

@@ -117,7 +117,8 @@ TEST(CliInputs, InspectJsonDescribesTheBundledBob) {
   EXPECT_EQ(j["component_count"], 1);
   EXPECT_TRUE(j["closed"].get<bool>());
   const int classes = j["vertex_classes"]["elliptic_count"].get<int>() +
-                      j["vertex_classes"]["hyperbolic_count"].get<int>() + j["vertex_classes"]["flat_count"].get<int>();
+                      j["vertex_classes"]["hyperbolic_count"].get<int>() +
+                      j["vertex_classes"]["flat_count"].get<int>();
   EXPECT_EQ(classes, j["vertex_count"].get<int>());
   EXPECT_LT(j["bounding_box"]["min_units"][0].get<double>(), j["bounding_box"]["max_units"][0].get<double>());
 }
