@@ -25,12 +25,7 @@ namespace {
 
 using foldkit::test::slurp;
 
-int count_entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir))
-    ++n;
-  return n;
-}
+using foldkit::test::count_entries;
 
 }  // namespace
 

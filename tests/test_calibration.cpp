@@ -2,6 +2,7 @@
 // a plan option that moves every stroke of a job with registration marks by exactly the stored offset
 // (and nothing else), the simulated device cutting off the print by that offset, and the CLI storing it
 // once (`calibrate --offset`) so that a new run of `cut --regmarks` applies it.
+#include "device_fixtures.hpp"
 #include "foldkit/devices/calibration.hpp"
 
 #include <gtest/gtest.h>
@@ -33,8 +34,7 @@ using namespace foldkit::devices;
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
-  return set;
+  return foldkit::test::builtin_profiles();
 }
 
 using foldkit::test::slurp;

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
 #include "test_paths.hpp"
@@ -81,12 +82,7 @@ std::vector<std::string> concat(std::vector<std::string> a, const std::vector<st
   return a;
 }
 
-std::vector<std::byte> bytes_of(const std::string& s) {
-  std::vector<std::byte> out;
-  for (char c : s)
-    out.push_back(static_cast<std::byte>(c));
-  return out;
-}
+using foldkit::test::bytes_of;
 
 std::string hex4(std::uint16_t v) {
   char text[8];

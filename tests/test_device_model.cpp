@@ -2,6 +2,7 @@
 // wrong profile instead of trusting it (TG codes, origin, commands, marks).
 #include <gtest/gtest.h>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/device_model.hpp"
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/hpgl.hpp"
@@ -17,8 +18,7 @@ namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
-  return set;
+  return foldkit::test::builtin_profiles();
 }
 
 const MediaProfile& paper() {
@@ -108,8 +108,7 @@ TEST(MachineModel, PassesEveryJobFoldkitWritesForEveryProfile) {
 }
 
 const StrokeFont& font() {
-  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
-  return f;
+  return foldkit::test::pen_font();
 }
 
 TEST(MachineModel, PassesEveryProfilesFullJobWithLabelsFoldsAndMarks) {

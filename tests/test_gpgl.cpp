@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/command_parser.hpp"
 #include "foldkit/devices/gpgl.hpp"
 #include "foldkit/devices/plan.hpp"
@@ -17,13 +18,11 @@ namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
-  return set;
+  return foldkit::test::builtin_profiles();
 }
 
 const StrokeFont& font() {
-  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
-  return f;
+  return foldkit::test::pen_font();
 }
 
 struct Case {

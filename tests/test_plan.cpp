@@ -2,6 +2,7 @@
 // registration marks and statistics.
 #include <gtest/gtest.h>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/plan.hpp"
 #include "foldkit/error.hpp"
 #include "sample_sheets.hpp"
@@ -11,13 +12,11 @@ namespace foldkit::devices {
 namespace {
 
 const ProfileSet& profiles() {
-  static const ProfileSet set = load_profiles(foldkit::test::profiles_dir());
-  return set;
+  return foldkit::test::builtin_profiles();
 }
 
 const StrokeFont& font() {
-  static const StrokeFont f = load_stroke_font(foldkit::test::stroke_font_path());
-  return f;
+  return foldkit::test::pen_font();
 }
 
 const Pass* find_pass(const Job& job, PassKind kind) {

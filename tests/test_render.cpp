@@ -106,12 +106,7 @@ std::array<unsigned, 2> png_dimensions(const fs::path& p) {
   return {be32(16), be32(20)};
 }
 
-int count_entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir))
-    ++n;
-  return n;
-}
+using foldkit::test::count_entries;
 
 }  // namespace
 

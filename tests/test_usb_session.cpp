@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/usb_ids.hpp"
 #include "foldkit/devices/usb_session.hpp"
 #include "foldkit/error.hpp"
@@ -16,12 +17,7 @@ using namespace std::chrono_literals;
 
 namespace {
 
-std::vector<std::byte> bytes_of(const std::string& s) {
-  std::vector<std::byte> out;
-  for (char c : s)
-    out.push_back(static_cast<std::byte>(c));
-  return out;
-}
+using foldkit::test::bytes_of;
 std::string text_of(std::span<const std::byte> b) {
   std::string s;
   for (auto c : b)

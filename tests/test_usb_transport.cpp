@@ -6,17 +6,13 @@
 #include <sstream>
 #include <string>
 
+#include "device_fixtures.hpp"
 #include "foldkit/devices/usb_ids.hpp"
 
 using namespace foldkit::devices;
 
 namespace {
-std::vector<std::byte> bytes_of(const std::string& s) {
-  std::vector<std::byte> out;
-  for (char c : s)
-    out.push_back(static_cast<std::byte>(c));
-  return out;
-}
+using foldkit::test::bytes_of;
 }  // namespace
 
 TEST(UsbIds, BuiltinTableHasNoDuplicateIdsAndNamesTheCameo3) {

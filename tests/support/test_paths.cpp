@@ -116,4 +116,11 @@ CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args)
   return r;
 }
 
+int count_entries(const std::filesystem::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir))
+    ++n;
+  return n;
+}
+
 }  // namespace foldkit::test

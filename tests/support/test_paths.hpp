@@ -25,6 +25,8 @@ std::vector<std::filesystem::path> corpus_meshes(int max_faces);
 std::filesystem::path foldkit_binary();
 /// The bytes of file `p` (empty when it cannot be read: the caller's expectations then fail).
 std::string slurp(const std::filesystem::path& p);
+/// How many entries directory `dir` holds (what a failed write may have left behind).
+int count_entries(const std::filesystem::path& dir);
 /// A fresh empty directory under the system temp dir, unique per call.
 std::filesystem::path temp_dir(const std::string& tag);
 
