@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -80,16 +81,26 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Least time between two progress reports.
+constexpr double kReportInterval_s = 0.2;
+// Score of an individual not yet evaluated: worse than any fitness.
+constexpr double kUnscored = 1e300;
+// The rearrangement may stitch and cut this many times per face before it gives up.
+constexpr int kRearrangeOperationsPerFace = 4;
+// Run r's generator is seeded from seed * kSeedMix + r + 1 (the golden ratio in 64 bits: runs of
+// neighbouring seeds do not share streams).
+constexpr std::uint64_t kSeedMix = 0x9E3779B97F4A7C15ull;
+
 struct Individual {
   std::vector<int> genes;  // stitchable edge ids, successes first after evaluation
   int successes = 0;
-  double score = 1e300;
+  double score = kUnscored;
   int pieces = 0;
 };
 
 struct RunResult {
   std::vector<char> fold;
-  double score = 1e300;
+  double score = kUnscored;
   int pieces = 0;
   int generations = 0;
   double share = 0;
@@ -252,7 +263,7 @@ GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const Pr
   auto parallel = [&](const auto& job) { run_parallel(runs, threads, job); };
   parallel([&](int r) {
     run[r] = std::make_unique<GaRun>(ctx, opt, opt.shares[r],
-                                     opt.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1,
+                                     opt.seed * kSeedMix + static_cast<std::uint64_t>(r) + 1,
                                      components, deadline, cancel);
     run[r]->start();
   });
@@ -260,14 +271,14 @@ GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const Pr
   double next_report = 0;
   while (true) {
     bool solved = false, all_done = true;
-    int best_pieces = 1 << 30;
+    int best_pieces = std::numeric_limits<int>::max();
     for (auto& r : run) {
       solved |= r->best().pieces <= components;
       all_done &= r->done();
       best_pieces = std::min(best_pieces, r->best().pieces);
     }
     if (progress && elapsed() >= next_report) {
-      next_report = elapsed() + 0.2;
+      next_report = elapsed() + kReportInterval_s;
       if (!progress({"ga", generation, best_pieces, 0, elapsed()})) cancel = true;
     }
     if (solved || all_done || cancel) break;
@@ -291,7 +302,7 @@ GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const Pr
   CutTree tree(ctx, best.fold);
   if (tree.piece_count() > components) {
     CutTree rearranged = tree;
-    if (rearrange_pieces(rearranged, components, opt.constraints, 4 * ctx.mesh->num_faces())) {
+    if (rearrange_pieces(rearranged, components, opt.constraints, kRearrangeOperationsPerFace * ctx.mesh->num_faces())) {
       out.method += "+rearrange";
       tree = std::move(rearranged);
     } else if (opt.repair_with_search) {

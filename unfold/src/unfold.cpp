@@ -62,7 +62,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       break;
     case Method::Search: {
       const UnfoldContext ctx = make_context(mesh);
-      SearchOptions so;
+      SearchOptions so = options.search;
       so.seed = options.seed;
       so.threads = options.threads;
       so.time_limit_s = options.time_limit_s;
@@ -81,12 +81,10 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
     }
     case Method::Ga: {
       const UnfoldContext ctx = make_context(mesh);
-      GaOptions go;
+      GaOptions go = options.ga;
       go.seed = options.seed;
       go.time_limit_s = options.time_limit_s;
       go.threads = options.threads;
-      go.population = options.population;
-      go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
       if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});

@@ -10,7 +10,7 @@
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/fitness.hpp"
-#include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/progress.hpp"
 
 namespace foldkit::unfold {
 

@@ -4,11 +4,12 @@
 // a tree edge on the path between two overlapping faces and re-attach the cut-off subtree through
 // another of its edges, keeping moves that do not raise the number of overlapping pairs.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
-#include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/progress.hpp"
 
 namespace foldkit::unfold {
 
