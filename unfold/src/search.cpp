@@ -41,6 +41,14 @@ namespace {
 constexpr int kCheckpointSteps = 16;
 // Least time between two progress reports.
 constexpr double kReportInterval_s = 0.2;
+// The overlap change a kick starts from: larger than any move can add, so the least bad candidate wins.
+constexpr int kAnyDelta = 1 << 20;
+// Largest noise added to a minimum-perimeter weight (weights lie in [0, 1]) for a fresh tree: reorders
+// edges of similar length, keeps the long ones early.
+constexpr double kRestartWeightNoise = 0.3;
+// The first rounds are this fraction of `round_steps`, doubling up to it: small meshes finish at once.
+constexpr int kFirstRoundDivisor = 8;
+constexpr int kMinRoundSteps = 16;
 
 int uniform(std::mt19937_64& rng, std::size_t n) {
   return static_cast<int>(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng));
@@ -111,7 +119,7 @@ class Walker {
     if (path.empty()) return;
 
     // During a kick any move is taken (the least bad of the candidates), to leave a local minimum.
-    int best_delta = kick_ > 0 ? (1 << 20) : opt_.max_uphill + 1, best_cut = -1, best_attach = -1;
+    int best_delta = kick_ > 0 ? kAnyDelta : opt_.max_uphill + 1, best_cut = -1, best_attach = -1;
     if (kick_ > 0) --kick_;
     for (int k = 0; k < opt_.candidates_per_move; ++k) {
       int e = path[uniform(rng_, path.size())];
@@ -188,7 +196,7 @@ class Walker {
       // different enough to leave a region the walk keeps returning to. It starts a new episode:
       // its descent is not cut short by kicks back to the old best tree.
       std::vector<double> w = ctx_.weight;
-      std::uniform_real_distribution<double> noise(0.0, 0.3);
+      std::uniform_real_distribution<double> noise(0.0, kRestartWeightNoise);
       for (double& x : w)
         x += noise(rng_);
       tree_ = CutTree(ctx_, folds_from_cuts(spanning_forest_cuts(m_, w, cons_)));
@@ -280,7 +288,7 @@ SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_f
   // Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
   // wins, so the result depends on the seed only (unless the time limit or a cancel stops it).
   int winner = -1;
-  int round_steps = std::max(16, opt.round_steps / 8);
+  int round_steps = std::max(kMinRoundSteps, opt.round_steps / kFirstRoundDivisor);
   for (int round = 0;; ++round) {
     for (int k = 0; k < walkers_n && winner < 0; ++k)
       if (walkers[k]->solved()) winner = k;
