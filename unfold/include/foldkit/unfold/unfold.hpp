@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/error.hpp"
 #include "foldkit/unfold/flat_faces.hpp"
 #include "foldkit/unfold/genetic.hpp"
 #include "foldkit/unfold/mesh.hpp"
@@ -58,7 +59,16 @@ struct UnfoldResult {
   std::vector<std::string> notes;
 };
 
+/// A mesh over UnfoldOptions::face_limit: decimate first (the CLI says how).
+class TooManyFaces : public InputError {
+ public:
+  TooManyFaces(const std::string& mesh_name, int faces, int limit)
+      : InputError(mesh_name, std::to_string(faces) + " faces, more than the " + std::to_string(limit) +
+                                  " foldkit unfolds (no paper model has that many): decimate first") {}
+};
+
 /// Unfolds every connected component of `mesh`; pieces of all components are numbered together.
+/// Throws TooManyFaces over the face limit, SeamError for impossible seams.
 UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const ProgressFn& progress = {});
 
 }  // namespace foldkit::unfold
