@@ -107,7 +107,13 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
   };
   unfold::UnfoldOptions unfold_options = options.unfold;
   unfold_options.seams = seams_of(run.loaded, mesh_file, options, run.loaded.notes);
-  run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
+  try {
+    run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
+  } catch (const unfold::TooManyFaces& e) {
+    throw InputError(e.file(), e.problem() + ", e.g. --max-faces 5000");
+  } catch (const unfold::SeamError& e) {
+    throw Error(e.message({"--cut", "--keep"}), ExitCode::Usage);
+  }
   return run;
 }
 
