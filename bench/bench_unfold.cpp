@@ -28,7 +28,7 @@ const char* kMeshes[] = {"spot_350.obj", "fish_350.obj", "bob_350.obj", "penguin
 void BM_CutTreeFromMst(benchmark::State& state) {
   const Mesh& mesh = example(kMeshes[state.range(0)]);
   const UnfoldContext ctx = make_context(mesh);
-  const std::vector<char> fold = folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight));
+  const EdgeStates fold = spanning_forest(mesh, ctx.weight);
   for (auto _ : state) {
     CutTree tree(ctx, fold);
     benchmark::DoNotOptimize(tree.overlap_count());
@@ -40,7 +40,7 @@ BENCHMARK(BM_CutTreeFromMst)->DenseRange(0, 3);
 void BM_SearchToOnePiece(benchmark::State& state) {
   const Mesh& mesh = example(kMeshes[state.range(0)]);
   const UnfoldContext ctx = make_context(mesh);
-  const std::vector<char> fold = folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight));
+  const EdgeStates fold = spanning_forest(mesh, ctx.weight);
   SearchOptions opt;
   for (auto _ : state) {
     SearchResult r = search_unfold(ctx, fold, opt);

@@ -15,6 +15,16 @@
 namespace foldkit::cli {
 namespace {
 
+// unfold::split_into_parts, its refusal worded with the CLI's --size.
+unfold::PartsResult split(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                          const unfold::PartOptions& po) {
+  try {
+    return unfold::split_into_parts(mesh, u, po);
+  } catch (const unfold::PartTooLarge& e) {
+    throw LayoutError(e.message("--size"));
+  }
+}
+
 long sheets_with_pieces(const layout::LayoutResult& r) {
   return std::count_if(r.sheet_stats.begin(), r.sheet_stats.end(),
                        [](const layout::SheetStats& s) { return s.pieces > 0; });
@@ -75,7 +85,7 @@ void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o
     po.room_fraction = kFractions[t];
     po.growth = unfold::PartGrowth::Round;
     Candidate c;
-    c.parts = unfold::split_into_parts(mesh, best.parts.unfolding, po);
+    c.parts = split(mesh, best.parts.unfolding, po);
     c.parts.split_pieces = best.parts.split_pieces;
     c.hull_area = hull_area(c.parts.unfolding);
     // A sheet is worth a few more parts, not a model in confetti.
@@ -116,7 +126,7 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     po.room_fraction = fraction;
     po.growth = growth;
     Candidate c;
-    c.parts = unfold::split_into_parts(mesh, u, po);
+    c.parts = split(mesh, u, po);
     c.hull_area = hull_area(c.parts.unfolding);
     return c;
   };

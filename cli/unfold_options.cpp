@@ -27,13 +27,17 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   cmd.add_option("--threads", o.unfold.threads, "Worker threads (0: all cores)")
       ->check(number_in(0, 256, "threads"))
       ->group(group);
-  cmd.add_option("--population", o.unfold.population, "GA population size (default 64)")
+  cmd.add_option("--population", o.unfold.ga.population, "GA population size (default 64)")
       ->check(number_in(4, 100000))
       ->group(group);
-  cmd.add_option("--lambda-p", o.unfold.lambda_p, "GA fitness weight of the piece count")->group(group);
-  cmd.add_option("--lambda-l", o.unfold.lambda_l, "GA fitness weight of the outline length")->group(group);
-  cmd.add_option("--lambda-m", o.unfold.lambda_m, "GA fitness weight of the sheet margin")->group(group);
-  cmd.add_option("--lambda-b", o.unfold.lambda_b, "GA fitness weight of matching-edge distance")
+  cmd.add_option("--lambda-p", o.unfold.ga.weights.lambda_p, "GA fitness weight of the piece count")
+      ->group(group);
+  cmd.add_option("--lambda-l", o.unfold.ga.weights.lambda_l,
+                 "GA fitness weight of R_l, the share of faces outside the largest piece")
+      ->group(group);
+  cmd.add_option("--lambda-m", o.unfold.ga.weights.lambda_m, "GA fitness weight of the sheet margin")
+      ->group(group);
+  cmd.add_option("--lambda-b", o.unfold.ga.weights.lambda_b, "GA fitness weight of matching-edge distance")
       ->group(group);
   cmd.add_option(
          "--flat-angle", o.flat_angle_deg,
@@ -103,7 +107,13 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
   };
   unfold::UnfoldOptions unfold_options = options.unfold;
   unfold_options.seams = seams_of(run.loaded, mesh_file, options, run.loaded.notes);
-  run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
+  try {
+    run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
+  } catch (const unfold::TooManyFaces& e) {
+    throw InputError(e.file(), e.problem() + ", e.g. --max-faces 5000");
+  } catch (const unfold::SeamError& e) {
+    throw Error(e.message({"--cut", "--keep"}), ExitCode::Usage);
+  }
   return run;
 }
 

@@ -18,7 +18,7 @@ struct UnfoldCliOptions {
   unfold::UnfoldOptions unfold;
   std::string method = "default";
   std::string cut_file, keep_file;
-  double flat_angle_deg = 0.5;  ///< --flat-angle
+  double flat_angle_deg = unfold::kDefaultFlatAngleDeg;  ///< --flat-angle
   /// The number of the first vertex in --cut/--keep lists; nullopt: the mesh format's own (OBJ 1, OFF/PLY 0).
   std::optional<int> index_base;
 };

@@ -11,9 +11,13 @@ using namespace foldkit;
 using namespace foldkit::unfold;
 
 namespace {
-int folds(const std::vector<char>& cut) {
-  return static_cast<int>(std::count(cut.begin(), cut.end(), 0));
+int folds(const EdgeStates& state) {
+  return static_cast<int>(std::count(state.begin(), state.end(), EdgeState::Fold));
 }
+bool is_cut(const EdgeStates& s, int e) {
+  return s[EdgeId(e)] == EdgeState::Cut;
+}
+
 }  // namespace
 
 TEST(DualGraph, MinimumPerimeterWeightsRunFromZeroAtTheLongestEdgeToOneAtTheShortest) {
@@ -34,7 +38,7 @@ TEST(DualGraph, MinimumPerimeterWeightsRunFromZeroAtTheLongestEdgeToOneAtTheShor
 
 TEST(DualGraph, TheSpanningForestFoldsOneEdgeFewerThanFacesPerComponent) {
   Mesh mesh = load_mesh(test::example_mesh("bob_350.obj")).mesh;
-  auto cut = spanning_forest_cuts(mesh, min_perimeter_weights(mesh));
+  auto cut = spanning_forest(mesh, min_perimeter_weights(mesh));
   EXPECT_EQ(count_components(mesh), 1);
   EXPECT_EQ(folds(cut), mesh.num_faces() - 1);
 }
@@ -42,21 +46,21 @@ TEST(DualGraph, TheSpanningForestFoldsOneEdgeFewerThanFacesPerComponent) {
 TEST(DualGraph, TheSpanningTreeHasMinimumWeight) {
   Mesh mesh = load_mesh(test::example_mesh("spot_128.obj")).mesh;
   auto w = min_perimeter_weights(mesh);
-  auto cut = spanning_forest_cuts(mesh, w);
+  auto cut = spanning_forest(mesh, w);
   double tree = 0;
   for (int e = 0; e < mesh.num_edges(); ++e)
-    if (!cut[e]) tree += w[e];
+    if (!is_cut(cut, e)) tree += w[e];
   // Swapping any cut edge in for the heaviest fold on its cycle never lowers the weight (cut property),
   // checked cheaply by forcing one light cut edge to fold: the result cannot be lighter.
   for (int e = 0; e < mesh.num_edges(); e += 7) {
-    if (!cut[e]) continue;
+    if (!is_cut(cut, e)) continue;
     EdgeConstraints c;
-    c.force_fold.assign(mesh.edges.size(), 0);
-    c.force_fold[e] = 1;
-    auto other = spanning_forest_cuts(mesh, w, c);
+    c.rule.assign(mesh.num_edges(), EdgeRule::Free);
+    c.rule[EdgeId(e)] = EdgeRule::MustFold;
+    auto other = spanning_forest(mesh, w, c);
     double sum = 0;
     for (int k = 0; k < mesh.num_edges(); ++k)
-      if (!other[k]) sum += w[k];
+      if (!is_cut(other, k)) sum += w[k];
     EXPECT_GE(sum, tree - 1e-12);
   }
 }
@@ -65,17 +69,16 @@ TEST(DualGraph, ForcedCutsAndFoldsAreHonoured) {
   Mesh mesh = load_mesh(test::example_mesh("spot_128.obj")).mesh;
   auto w = min_perimeter_weights(mesh);
   EdgeConstraints c;
-  c.force_cut.assign(mesh.edges.size(), 0);
-  c.force_fold.assign(mesh.edges.size(), 0);
+  c.rule.assign(mesh.num_edges(), EdgeRule::Free);
   for (int e = 0; e < 20; ++e)
-    c.force_cut[e] = 1;
+    c.rule[EdgeId(e)] = EdgeRule::MustCut;
   for (int e = 20; e < 30; ++e)
-    c.force_fold[e] = 1;
-  auto cut = spanning_forest_cuts(mesh, w, c);
+    c.rule[EdgeId(e)] = EdgeRule::MustFold;
+  auto cut = spanning_forest(mesh, w, c);
   for (int e = 0; e < 20; ++e)
-    EXPECT_TRUE(cut[e]);
+    EXPECT_TRUE(is_cut(cut, e));
   for (int e = 20; e < 30; ++e)
-    EXPECT_FALSE(cut[e]);
+    EXPECT_FALSE(is_cut(cut, e));
 }
 
 TEST(DualGraph, AThresholdLeavesSpanningSubtrees) {
@@ -84,10 +87,10 @@ TEST(DualGraph, AThresholdLeavesSpanningSubtrees) {
   std::vector<double> sorted = w;
   std::sort(sorted.begin(), sorted.end());
   double threshold = sorted[sorted.size() * 3 / 10];  // keep the lightest 30% of dual edges at most
-  auto cut = spanning_forest_cuts(mesh, w, {}, threshold);
+  auto cut = spanning_forest(mesh, w, {}, threshold);
   EXPECT_LT(folds(cut), mesh.num_faces() - 1);
   for (int e = 0; e < mesh.num_edges(); ++e)
-    if (!cut[e]) {
+    if (!is_cut(cut, e)) {
       EXPECT_LT(w[e], threshold);
     }
 }

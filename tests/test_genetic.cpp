@@ -39,21 +39,22 @@ TEST(InitialPatches, CutAboutTheAskedShareOfTheDualEdgesAndOverlapNowhereOnceRes
   for (const auto& e : mesh.edges)
     interior += e.boundary() ? 0 : 1;
   for (double share : {0.65, 0.70, 0.75}) {
-    std::vector<char> fold = initial_patch_folds(ctx, share, {});
-    const double cut_share = 1.0 - static_cast<double>(std::count(fold.begin(), fold.end(), 1)) / interior;
+    const EdgeStates patches = initial_patches(ctx, share, {});
+    const double cut_share =
+        1.0 - static_cast<double>(std::count(patches.begin(), patches.end(), EdgeState::Fold)) / interior;
     EXPECT_NEAR(cut_share, share, 0.02);
-    CutTree tree(ctx, fold);
+    CutTree tree(ctx, patches);
     cut_overlaps(tree, {});
     EXPECT_EQ(tree.overlap_count(), 0);
     EXPECT_GT(tree.piece_count(), mesh.num_faces() / 4) << "patches are small";
-    EXPECT_EQ(check_unfolding(mesh, flatten(mesh, tree.cut_flags())), std::vector<std::string>{});
+    EXPECT_EQ(check_unfolding(mesh, flatten(mesh, tree.states())), std::vector<std::string>{});
   }
 }
 
 TEST(Fitness, TermsStayInRangeAndOnePieceHasNoFacesOutsideTheLargest) {
   const Mesh mesh = load("spot_350.obj");
   const UnfoldContext ctx = make_context(mesh);
-  CutTree patches(ctx, initial_patch_folds(ctx, 0.7, {}));
+  CutTree patches(ctx, initial_patches(ctx, 0.7, {}));
   FitnessTerms t = fitness_terms(patches);
   EXPECT_EQ(t.pieces, patches.piece_count());
   for (double r : {t.rl, t.rm, t.rb}) {
@@ -61,7 +62,7 @@ TEST(Fitness, TermsStayInRangeAndOnePieceHasNoFacesOutsideTheLargest) {
     EXPECT_LE(r, 1.0);
   }
   EXPECT_GT(t.rl, 0.5);
-  CutTree tree(ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight)));
+  CutTree tree(ctx, spanning_forest(mesh, ctx.weight));
   FitnessTerms one = fitness_terms(tree);
   EXPECT_EQ(one.pieces, 1);
   EXPECT_EQ(one.rl, 0.0);
@@ -104,17 +105,17 @@ TEST(Crossover, KeepsSharedSuccessesAndFailuresInPlaceAndYieldsAPermutation) {
 TEST(Rearrange, LeavesAnOverlapFreeStateWithConsistentCurvatureCounts) {
   const Mesh mesh = load("fish_350.obj");
   const UnfoldContext ctx = make_context(mesh);
-  CutTree tree(ctx, initial_patch_folds(ctx, 0.65, {}));
+  CutTree tree(ctx, initial_patches(ctx, 0.65, {}));
   cut_overlaps(tree, {});
   rearrange_pieces(tree, 1, {}, 4 * mesh.num_faces());
   EXPECT_EQ(tree.overlap_count(), 0);
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     int cuts = 0;
     for (int e = 0; e < mesh.num_edges(); ++e)
-      if (!tree.folded(e) && (mesh.edges[e].v[0] == v || mesh.edges[e].v[1] == v)) ++cuts;
-    ASSERT_EQ(tree.cut_count(v), cuts) << "vertex " << v;
+      if (!tree.folded(EdgeId(e)) && (mesh.edges[e].v[0] == v || mesh.edges[e].v[1] == v)) ++cuts;
+    ASSERT_EQ(tree.cut_count(VertexId(v)), cuts) << "vertex " << v;
   }
-  EXPECT_EQ(check_unfolding(mesh, flatten(mesh, tree.cut_flags())), std::vector<std::string>{});
+  EXPECT_EQ(check_unfolding(mesh, flatten(mesh, tree.states())), std::vector<std::string>{});
 }
 
 class GaOnExamples : public ::testing::TestWithParam<const char*> {};
@@ -126,7 +127,7 @@ TEST_P(GaOnExamples, ReachesOneValidPieceWithAFixedSeed) {
   opt.seed = 2;
   opt.time_limit_s = 60;
   const GaResult r = genetic_unfold(ctx, opt);
-  const Unfolding u = flatten(mesh, r.cut);
+  const Unfolding u = flatten(mesh, r.edges);
   EXPECT_EQ(u.piece_count, 1) << r.method;
   EXPECT_EQ(r.pieces, 1);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
@@ -144,7 +145,7 @@ TEST(Ga, OneAndTwoThreadsGiveTheSameUnfolding) {
   const GaResult one = genetic_unfold(ctx, opt);
   opt.threads = 2;
   const GaResult two = genetic_unfold(ctx, opt);
-  EXPECT_EQ(one.cut, two.cut);
+  EXPECT_TRUE(one.edges == two.edges);
   EXPECT_EQ(one.method, two.method);
   EXPECT_EQ(one.score, two.score);
 }
@@ -153,20 +154,37 @@ TEST(Ga, ForcedCutsStayCutAndKeptEdgesStayFolded) {
   const Mesh mesh = load("bob_350.obj");
   const UnfoldContext ctx = make_context(mesh);
   GaOptions opt;
-  opt.constraints.force_cut.assign(mesh.num_edges(), 0);
-  opt.constraints.force_fold.assign(mesh.num_edges(), 0);
+  opt.constraints.rule.assign(mesh.num_edges(), EdgeRule::Free);
   for (int e : mesh.face_edges[10])
-    opt.constraints.force_cut[e] = 1;
+    opt.constraints.rule[EdgeId(e)] = EdgeRule::MustCut;
   for (int e : mesh.face_edges[200])
-    opt.constraints.force_fold[e] = 1;
+    opt.constraints.rule[EdgeId(e)] = EdgeRule::MustFold;
   const GaResult r = genetic_unfold(ctx, opt);
   for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (opt.constraints.force_cut[e]) {
-      EXPECT_TRUE(r.cut[e]) << "edge " << e;
+    if (opt.constraints.cut(EdgeId(e))) {
+      EXPECT_EQ(r.edges[EdgeId(e)], EdgeState::Cut) << "edge " << e;
     }
-    if (opt.constraints.force_fold[e]) {
-      EXPECT_FALSE(r.cut[e]) << "edge " << e;
+    if (opt.constraints.fold(EdgeId(e))) {
+      EXPECT_EQ(r.edges[EdgeId(e)], EdgeState::Fold) << "edge " << e;
     }
   }
-  EXPECT_EQ(check_unfolding(mesh, flatten(mesh, r.cut)), std::vector<std::string>{});
+  EXPECT_EQ(check_unfolding(mesh, flatten(mesh, r.edges)), std::vector<std::string>{});
+}
+
+TEST(Ga, ACancelledGaStopsBeforeItsFirstGenerationAndStillReturnsAValidUnfolding) {
+  const Mesh mesh = load("fish_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  GaOptions opt;
+  opt.seed = 2;
+  std::vector<std::string> stages;
+  const GaResult r = genetic_unfold(ctx, opt, [&](const UnfoldProgress& p) {
+    stages.push_back(p.stage);
+    return false;
+  });
+  EXPECT_EQ(r.generations, 0) << "stopped before the first generation";
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front(), "ga");
+  EXPECT_EQ(std::count(stages.begin(), stages.end(), "ga"), 1) << "never asked again after answering stop";
+  const Unfolding u = flatten(mesh, r.edges);
+  EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }

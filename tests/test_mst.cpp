@@ -52,23 +52,23 @@ TEST(Mst, ExampleMeshesUnfoldWithoutOverlapsIntoFewPieces) {
 TEST(Mst, ForcedFoldsThatOverlapAreAClearError) {
   Mesh mesh = load_mesh(test::example_mesh("spot_350.obj")).mesh;
   EdgeConstraints keep_all;
-  keep_all.force_fold.assign(mesh.edges.size(), 0);
-  auto tree = spanning_forest_cuts(mesh, min_perimeter_weights(mesh));
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    keep_all.force_fold[e] = !tree[e];
+  keep_all.rule.assign(mesh.num_edges(), EdgeRule::Free);
+  auto tree = spanning_forest(mesh, min_perimeter_weights(mesh));
+  for (EdgeId e : all_ids<EdgeId>(mesh.num_edges()))
+    if (tree[e] == EdgeState::Fold) keep_all.rule[e] = EdgeRule::MustFold;
   EXPECT_THROW(unfold_mst(mesh, keep_all), Error);
 }
 
 TEST(Mst, FoldPathJoinsTwoFacesThroughFoldEdgesOnly) {
   Mesh mesh = load_mesh(test::example_mesh("bob_128.obj")).mesh;
-  auto cut = spanning_forest_cuts(mesh, min_perimeter_weights(mesh));
+  auto cut = spanning_forest(mesh, min_perimeter_weights(mesh));
   FoldForest forest = fold_forest(mesh, cut);
   auto path = fold_path(forest, 3, 100);
   ASSERT_FALSE(path.empty());
   int at = 3;
-  for (int e : path) {
-    ASSERT_FALSE(cut[e]);
-    const MeshEdge& me = mesh.edges[e];
+  for (EdgeId e : path) {
+    ASSERT_EQ(cut[e], EdgeState::Fold);
+    const MeshEdge& me = mesh.edge(e);
     ASSERT_TRUE(me.face[0] == at || me.face[1] == at);
     at = me.face[0] == at ? me.face[1] : me.face[0];
   }

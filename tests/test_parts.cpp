@@ -114,10 +114,12 @@ TEST(Parts, AFlatFaceLargerThanTheSheetIsRefusedNamingTheLargestSizeThatFits) {
   try {
     split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, 600));
     FAIL() << "a wall larger than A4 was accepted";
-  } catch (const LayoutError& e) {
+  } catch (const PartTooLarge& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("flat face"), std::string::npos) << what;
-    EXPECT_NE(what.find("the largest --size that fits is"), std::string::npos) << what;
+    EXPECT_NE(what.find("the largest size that fits is"), std::string::npos) << what;
+    EXPECT_EQ(what.find("--"), std::string::npos) << "the library names no command-line flag: " << what;
+    EXPECT_NE(e.message("--size").find("the largest --size that fits is"), std::string::npos);
   }
 }
 

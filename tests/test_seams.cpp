@@ -77,6 +77,17 @@ TEST(Seams, ImpossibleSeamsAreUsageErrors) {
   SeamConstraints out_of_range;
   out_of_range.forbid_cut.push_back({1, 1'000'000});
   EXPECT_THROW(resolve_seams(mesh, out_of_range), Error);
+  try {
+    resolve_seams(mesh, both);
+    FAIL() << "an edge both cut and kept was accepted";
+  } catch (const SeamError& e) {
+    EXPECT_EQ(e.exit_code(), ExitCode::Usage);
+    EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos)
+        << "the library names no flag: " << e.what();
+    EXPECT_EQ(e.message({"--cut", "--keep"}), "edge " + std::to_string(mesh.edges[5].v[0]) + "-" +
+                                                  std::to_string(mesh.edges[5].v[1]) +
+                                                  " is both in --cut and in --keep");
+  }
 }
 
 TEST(Seams, AnEdgeListMustBeARegularFileOfBoundedSize) {
@@ -247,7 +258,7 @@ TEST(Seams, ObjLineElementsInTheMeshFileAreReadAsSeams) {
   const EdgeConstraints constraints = resolve_seams(loaded.mesh, options.seams);
   int cut = 0;
   for (int e = 0; e < loaded.mesh.num_edges(); ++e)
-    if (constraints.force_cut[e]) {
+    if (constraints.cut(EdgeId(e))) {
       EXPECT_TRUE(r.unfolding.edges[e].cut) << e;
       ++cut;
     }

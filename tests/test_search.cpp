@@ -7,6 +7,7 @@
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/search.hpp"
+#include "foldkit/unfold/unfold.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 #include "test_paths.hpp"
 
@@ -19,8 +20,8 @@ Mesh load(const std::string& name) {
   return load_mesh(test::example_mesh(name)).mesh;
 }
 
-std::vector<char> mst_folds(const UnfoldContext& ctx, const EdgeConstraints& c = {}) {
-  return folds_from_cuts(spanning_forest_cuts(*ctx.mesh, ctx.weight, c));
+EdgeStates mst_folds(const UnfoldContext& ctx, const EdgeConstraints& c = {}) {
+  return spanning_forest(*ctx.mesh, ctx.weight, c);
 }
 
 std::string joined(const std::vector<std::string>& lines) {
@@ -42,7 +43,7 @@ TEST_P(SearchOnExamples, ReachesOneValidPieceWithAFixedSeed) {
   opt.time_limit_s = 30;
   const SearchResult r = search_unfold(ctx, mst_folds(ctx), opt);
   ASSERT_TRUE(r.solved);
-  const Unfolding u = flatten(mesh, r.cut);
+  const Unfolding u = flatten(mesh, r.edges);
   EXPECT_EQ(u.piece_count, 1);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }
@@ -58,7 +59,7 @@ TEST(Search, TheSameSeedGivesTheSameCuts) {
   const SearchResult a = search_unfold(ctx, mst_folds(ctx), opt);
   const SearchResult b = search_unfold(ctx, mst_folds(ctx), opt);
   ASSERT_TRUE(a.solved);
-  EXPECT_EQ(a.cut, b.cut);
+  EXPECT_TRUE(a.edges == b.edges);
   EXPECT_EQ(a.steps, b.steps);
 }
 
@@ -76,9 +77,9 @@ TEST(Search, ThePortfolioGivesTheSameCutsOnOneOrTwoThreads) {
   opt.threads = 3;
   const SearchResult three = search_unfold(ctx, mst_folds(ctx), opt);
   ASSERT_TRUE(one.solved);
-  EXPECT_EQ(one.cut, two.cut);
+  EXPECT_TRUE(one.edges == two.edges);
   EXPECT_EQ(one.steps, two.steps);
-  EXPECT_EQ(one.cut, three.cut);
+  EXPECT_TRUE(one.edges == three.edges);
   EXPECT_EQ(one.steps, three.steps);
 }
 
@@ -90,7 +91,7 @@ TEST(Search, OutOfTimeTheBestTreeIsCutApartIntoAValidUnfolding) {
   const SearchResult r = search_unfold(ctx, mst_folds(ctx), opt);
   EXPECT_FALSE(r.solved);
   EXPECT_GT(r.overlaps_left, 0);
-  const Unfolding u = flatten(mesh, r.cut);
+  const Unfolding u = flatten(mesh, r.edges);
   EXPECT_GT(u.piece_count, 1);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }
@@ -108,7 +109,7 @@ TEST(Search, ACancelledSearchStopsAtOnceAndStillReturnsAValidUnfolding) {
   EXPECT_EQ(calls, 1) << "asked before the first step, and never again after answering stop";
   EXPECT_EQ(r.steps, 0);
   EXPECT_FALSE(r.solved);
-  const Unfolding u = flatten(mesh, r.cut);
+  const Unfolding u = flatten(mesh, r.edges);
   EXPECT_GT(u.piece_count, 1);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }
@@ -143,28 +144,44 @@ TEST(Search, ForcedCutsStayCutAndKeptEdgesStayFolded) {
   const Mesh mesh = load("spot_350.obj");
   const UnfoldContext ctx = make_context(mesh);
   EdgeConstraints c;
-  c.force_cut.assign(mesh.num_edges(), 0);
-  c.force_fold.assign(mesh.num_edges(), 0);
+  c.rule.assign(mesh.num_edges(), EdgeRule::Free);
   // Cut a short chain of edges around face 0's first vertex; keep the edges of face 100 folded.
   for (int e : mesh.face_edges[0])
-    c.force_cut[e] = 1;
+    c.rule[EdgeId(e)] = EdgeRule::MustCut;
   for (int e : mesh.face_edges[100])
-    c.force_fold[e] = 1;
+    c.rule[EdgeId(e)] = EdgeRule::MustFold;
   SearchOptions opt;
   opt.constraints = c;
   const SearchResult r = search_unfold(ctx, mst_folds(ctx, c), opt);
   for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (c.force_cut[e]) {
-      EXPECT_TRUE(r.cut[e]) << "edge " << e << " must be cut";
+    if (c.cut(EdgeId(e))) {
+      EXPECT_EQ(r.edges[EdgeId(e)], EdgeState::Cut) << "edge " << e << " must be cut";
     }
-    if (c.force_fold[e]) {
-      EXPECT_FALSE(r.cut[e]) << "edge " << e << " must stay folded";
+    if (c.fold(EdgeId(e))) {
+      EXPECT_EQ(r.edges[EdgeId(e)], EdgeState::Fold) << "edge " << e << " must stay folded";
     }
   }
-  const Unfolding u = flatten(mesh, r.cut);
+  const Unfolding u = flatten(mesh, r.edges);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{});
   // Face 0 cut all round is a piece of its own; solved, the rest is the other piece.
   EXPECT_EQ(std::count(u.piece_of_face.begin(), u.piece_of_face.end(), u.piece_of_face[0]), 1);
   ASSERT_TRUE(r.solved);
   EXPECT_EQ(u.piece_count, 2);
+}
+
+TEST(Search, ItsOwnOptionsReachItThroughUnfoldMesh) {
+  // A search that may not move (no candidate moves, no restarts) cannot join fish_350's overlapping
+  // spanning tree: set through UnfoldOptions::search, that must show in the result.
+  const Mesh mesh = load("fish_350.obj");
+  UnfoldOptions options;
+  options.method = Method::Search;
+  options.time_limit_s = 0.5;
+  options.search.candidates_per_move = 0;
+  options.search.restart_after = 1 << 30;
+  const UnfoldResult r = unfold_mesh(mesh, options);
+  EXPECT_GT(r.unfolding.piece_count, 1);
+  EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+    return n.find("search stopped") != std::string::npos;
+  }));
+  EXPECT_EQ(check_unfolding(mesh, r.unfolding), std::vector<std::string>{});
 }

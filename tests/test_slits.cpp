@@ -26,10 +26,9 @@ Mesh load(const std::string& name) {
 CutTree solved_tree(const UnfoldContext& ctx, const EdgeConstraints& constraints = {}) {
   SearchOptions opt;
   opt.constraints = constraints;
-  const SearchResult r =
-      search_unfold(ctx, folds_from_cuts(spanning_forest_cuts(*ctx.mesh, ctx.weight, constraints)), opt);
+  const SearchResult r = search_unfold(ctx, spanning_forest(*ctx.mesh, ctx.weight, constraints), opt);
   EXPECT_TRUE(r.solved);
-  return CutTree(ctx, folds_from_cuts(r.cut));
+  return CutTree(ctx, r.edges);
 }
 
 }  // namespace
@@ -50,8 +49,8 @@ TEST_P(SlitsOnExamples, MostSlitsCloseAndTheUnfoldingStaysOneValidPiece) {
   EXPECT_EQ(tree.overlap_count(), 0);
   EXPECT_EQ(tree.piece_count(), 1);
   for (int v = 0; v < mesh.num_vertices(); ++v)
-    EXPECT_GE(tree.cut_count(v), ctx.required_cuts[v]) << "vertex " << v;
-  const Unfolding u = flatten(mesh, tree.cut_flags());
+    EXPECT_GE(tree.cut_count(VertexId(v)), ctx.required_cuts[v]) << "vertex " << v;
+  const Unfolding u = flatten(mesh, tree.states());
   EXPECT_EQ(u.piece_count, 1);
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{});
 }
@@ -64,13 +63,13 @@ TEST(Slits, ALeafAtAFlatVertexIsASlitAndOneAtAConePointIsNot) {
   const CutTree tree = solved_tree(ctx);
   const std::vector<double> defect = angle_defects(mesh);
   int flat = 0, cones = 0;
-  for (int e = 0; e < mesh.num_edges(); ++e) {
+  for (EdgeId e : all_ids<EdgeId>(mesh.num_edges())) {
     if (tree.folded(e)) {
       EXPECT_TRUE(std::isinf(seam_gap_per_length(tree, e)));
       continue;
     }
-    for (int v : mesh.edges[e].v) {
-      if (tree.cut_count(v) != 1) continue;
+    for (int v : mesh.edge(e).v) {
+      if (tree.cut_count(VertexId(v)) != 1) continue;
       // The far ends of a leaf's two sides are 2 sin(defect / 2) of its length apart.
       EXPECT_NEAR(seam_gap_per_length(tree, e), 2 * std::sin(0.5 * defect[v]), 1e-9);
       (defect[v] < 0.2 ? flat : cones) += 1;
@@ -92,12 +91,11 @@ TEST(Slits, ForcedCutsAndFoldsAreKept) {
   // Forbid cutting, and force, every tenth edge of a first solution's folds and cuts.
   const CutTree first = solved_tree(ctx);
   EdgeConstraints c;
-  c.force_cut.assign(mesh.num_edges(), 0);
-  c.force_fold.assign(mesh.num_edges(), 0);
+  c.rule.assign(mesh.num_edges(), EdgeRule::Free);
   for (int e = 0; e < mesh.num_edges(); e += 10)
-    (first.folded(e) ? c.force_fold : c.force_cut)[e] = 1;
+    c.rule[EdgeId(e)] = first.folded(EdgeId(e)) ? EdgeRule::MustFold : EdgeRule::MustCut;
   CutTree tree = solved_tree(ctx, c);
-  for (int e = 0; e < mesh.num_edges(); ++e) {
+  for (EdgeId e : all_ids<EdgeId>(mesh.num_edges())) {
     if (c.fold(e)) {
       ASSERT_TRUE(tree.folded(e));
     }
@@ -107,12 +105,12 @@ TEST(Slits, ForcedCutsAndFoldsAreKept) {
   }
   const SlitResult r = close_slits(tree, c, {});
   EXPECT_GT(r.moves, 0);
-  for (int e = 0; e < mesh.num_edges(); ++e) {
+  for (EdgeId e : all_ids<EdgeId>(mesh.num_edges())) {
     if (c.fold(e)) {
-      EXPECT_TRUE(tree.folded(e)) << "edge " << e;
+      EXPECT_TRUE(tree.folded(e)) << "edge " << e.index();
     }
     if (c.cut(e)) {
-      EXPECT_FALSE(tree.folded(e)) << "edge " << e;
+      EXPECT_FALSE(tree.folded(e)) << "edge " << e.index();
     }
   }
   EXPECT_EQ(tree.overlap_count(), 0);
@@ -125,7 +123,7 @@ TEST(Slits, TheSameTreeGivesTheSameCuts) {
   CutTree b = a;
   close_slits(a, {}, {});
   close_slits(b, {}, {});
-  EXPECT_EQ(a.fold_flags(), b.fold_flags());
+  EXPECT_TRUE(a.states() == b.states());
 }
 
 TEST(Slits, TheUnfoldingStageClosesThemUnlessAskedNotTo) {
@@ -135,10 +133,7 @@ TEST(Slits, TheUnfoldingStageClosesThemUnlessAskedNotTo) {
   const UnfoldResult a = unfold_mesh(mesh, with), b = unfold_mesh(mesh, without);
   const UnfoldContext ctx = make_context(mesh);
   auto slits = [&](const Unfolding& u) {
-    std::vector<char> cut(u.edges.size());
-    for (std::size_t e = 0; e < u.edges.size(); ++e)
-      cut[e] = u.edges[e].cut;
-    return count_slits(CutTree(ctx, folds_from_cuts(cut)), SlitOptions{}.min_gap_per_length);
+    return count_slits(CutTree(ctx, edge_states(u)), SlitOptions{}.min_gap_per_length);
   };
   EXPECT_EQ(a.unfolding.piece_count, 1);
   EXPECT_LT(2 * slits(a.unfolding), slits(b.unfolding));

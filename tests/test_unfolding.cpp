@@ -35,7 +35,7 @@ void expect_congruent(const Mesh& mesh, const Unfolding& u) {
 TEST(Flatten, EveryFlatTriangleIsCongruentAndCounterClockwiseOnRealMeshes) {
   for (const char* name : {"spot_350.obj", "fish_350.obj", "bob_350.obj", "penguin_500.obj"}) {
     Mesh mesh = example(name);
-    Unfolding u = flatten(mesh, spanning_forest_cuts(mesh, min_perimeter_weights(mesh)));
+    Unfolding u = flatten(mesh, spanning_forest(mesh, min_perimeter_weights(mesh)));
     expect_congruent(mesh, u);
     EXPECT_EQ(u.piece_count, 1) << name << ": a spanning tree lays out as one (overlapping) piece";
   }
@@ -43,7 +43,7 @@ TEST(Flatten, EveryFlatTriangleIsCongruentAndCounterClockwiseOnRealMeshes) {
 
 TEST(Flatten, FoldingEveryEdgeCutsTheEdgesThatCloseCycles) {
   Mesh mesh = example("bob_128.obj");
-  Unfolding u = flatten(mesh, std::vector<char>(mesh.edges.size(), 0));
+  Unfolding u = flatten(mesh, all_edges(mesh.num_edges(), EdgeState::Fold));
   int folds = 0;
   for (const auto& e : u.edges)
     folds += e.cut ? 0 : 1;
@@ -53,7 +53,7 @@ TEST(Flatten, FoldingEveryEdgeCutsTheEdgesThatCloseCycles) {
 
 TEST(Flatten, CuttingEveryEdgeGivesOnePiecePerFace) {
   Mesh mesh = example("spot_128.obj");
-  Unfolding u = flatten(mesh, std::vector<char>(mesh.edges.size(), 1));
+  Unfolding u = flatten(mesh, all_edges(mesh.num_edges(), EdgeState::Cut));
   EXPECT_EQ(u.piece_count, mesh.num_faces());
   EXPECT_EQ(u.seam_count(), mesh.num_edges());
   EXPECT_TRUE(check_unfolding(mesh, u).empty());
@@ -65,7 +65,7 @@ TEST(Flatten, CuttingEveryEdgeGivesOnePiecePerFace) {
 
 TEST(Flatten, FoldEdgesCarryTheSignedDihedralAngleAndLength) {
   Mesh mesh = example("spot_350.obj");
-  Unfolding u = flatten(mesh, spanning_forest_cuts(mesh, min_perimeter_weights(mesh)));
+  Unfolding u = flatten(mesh, spanning_forest(mesh, min_perimeter_weights(mesh)));
   int mountains = 0, valleys = 0;
   for (int e = 0; e < mesh.num_edges(); ++e) {
     EXPECT_DOUBLE_EQ(u.edges[e].length, edge_length(mesh, e));
@@ -79,7 +79,7 @@ TEST(Flatten, FoldEdgesCarryTheSignedDihedralAngleAndLength) {
 
 TEST(CheckUnfolding, NoticesAMovedCornerAMirroredFaceAndOverlaps) {
   Mesh mesh = example("spot_128.obj");
-  Unfolding good = flatten(mesh, std::vector<char>(mesh.edges.size(), 1));
+  Unfolding good = flatten(mesh, all_edges(mesh.num_edges(), EdgeState::Cut));
   ASSERT_TRUE(check_unfolding(mesh, good).empty());
 
   Unfolding moved = good;
@@ -92,7 +92,7 @@ TEST(CheckUnfolding, NoticesAMovedCornerAMirroredFaceAndOverlaps) {
   EXPECT_FALSE(check_unfolding(mesh, mirrored).empty());
 
   // A spanning tree flattened whole overlaps itself somewhere on a real mesh.
-  Unfolding tree = flatten(mesh, spanning_forest_cuts(mesh, min_perimeter_weights(mesh)));
+  Unfolding tree = flatten(mesh, spanning_forest(mesh, min_perimeter_weights(mesh)));
   auto problems = check_unfolding(mesh, tree);
   ASSERT_FALSE(problems.empty());
   EXPECT_NE(problems.front().find("overlap"), std::string::npos) << problems.front();
@@ -100,7 +100,7 @@ TEST(CheckUnfolding, NoticesAMovedCornerAMirroredFaceAndOverlaps) {
 
 TEST(CheckUnfolding, NoticesAFoldBetweenTwoPieces) {
   Mesh mesh = example("spot_128.obj");
-  Unfolding u = flatten(mesh, std::vector<char>(mesh.edges.size(), 1));
+  Unfolding u = flatten(mesh, all_edges(mesh.num_edges(), EdgeState::Cut));
   u.edges[3].cut = false;
   EXPECT_FALSE(check_unfolding(mesh, u).empty());
 }

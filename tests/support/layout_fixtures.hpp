@@ -60,10 +60,10 @@ inline UnfoldedExample tetrahedron() {
   std::vector<std::array<int, 3>> f = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};  // outward
   UnfoldedExample ex;
   ex.mesh = unfold::make_mesh(v, f, "tetrahedron");
-  std::vector<char> cut(ex.mesh.edges.size(), 0);
-  for (std::size_t e = 0; e < ex.mesh.edges.size(); ++e)
-    cut[e] = ex.mesh.edges[e].v[0] == 0 ? 1 : 0;
-  ex.unfolding = unfold::flatten(ex.mesh, cut);
+  unfold::EdgeStates state(ex.mesh.num_edges(), unfold::EdgeState::Fold);
+  for (unfold::EdgeId e : unfold::all_ids<unfold::EdgeId>(ex.mesh.num_edges()))
+    if (ex.mesh.edge(e).v[0] == 0) state[e] = unfold::EdgeState::Cut;
+  ex.unfolding = unfold::flatten(ex.mesh, state);
   return ex;
 }
 

@@ -48,22 +48,15 @@ UnfoldContext make_context(const Mesh& mesh) {
   return ctx;
 }
 
-std::vector<char> folds_from_cuts(const std::vector<char>& cut) {
-  std::vector<char> fold(cut.size());
-  for (std::size_t e = 0; e < cut.size(); ++e)
-    fold[e] = cut[e] ? 0 : 1;
-  return fold;
-}
-
-CutTree::CutTree(const UnfoldContext& context, std::vector<char> fold)
+CutTree::CutTree(const UnfoldContext& context, EdgeStates state)
     : ctx_(&context),
-      fold_(std::move(fold)),
+      state_(std::move(state)),
       index_(context.mesh->num_faces(), context.cell_size, context.eps) {
   const Mesh& m = *ctx_->mesh;
   const int nf = m.num_faces(), ne = m.num_edges();
-  fold_.resize(ne, 0);
-  for (int e = 0; e < ne; ++e)
-    if (m.edges[e].boundary()) fold_[e] = 0;
+  state_.resize(ne, EdgeState::Cut);
+  for (EdgeId e : all_ids<EdgeId>(ne))
+    if (m.edge(e).boundary()) state_[e] = EdgeState::Cut;
   piece_.assign(nf, -1);
   partners_.assign(nf, {});
   hot_pos_.assign(nf, -1);
@@ -71,6 +64,13 @@ CutTree::CutTree(const UnfoldContext& context, std::vector<char> fold)
   parent_.assign(nf, -1);
   parent_edge_.assign(nf, -1);
   depth_.assign(nf, 0);
+  const std::vector<Triangle2> tri = lay_out_pieces();
+  count_cuts();
+  index_all(tri);
+}
+
+std::vector<Triangle2> CutTree::lay_out_pieces() {
+  const int nf = num_faces();
   std::vector<Triangle2> tri(nf);
   std::vector<int> queue;
   queue.reserve(nf);
@@ -82,50 +82,52 @@ CutTree::CutTree(const UnfoldContext& context, std::vector<char> fold)
     tri[root] = ctx_->canonical[root];
     queue.assign(1, root);
     parent_edge_[root] = -1;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      int f = queue[head];
-      for (int e : m.face_edges[f]) {
-        if (!fold_[e] || e == parent_edge_[f]) continue;
-        int g = across(e, f);
-        if (piece_[g] >= 0) {
-          fold_[e] = 0;  // closes a cycle: a forest cannot fold it
-          continue;
-        }
-        piece_[g] = id;
-        parent_edge_[g] = e;
-        // Place g by the motion taking its canonical copy of e onto f's placed copy.
-        const auto& fg = m.faces[g];
-        int v0 = m.edges[e].v[0], v1 = m.edges[e].v[1];
-        auto pos = [&](const Triangle2& t, const std::array<int, 3>& face, int v) {
-          for (int i = 0; i < 3; ++i)
-            if (face[i] == v) return t[i];
-          return t[0];
-        };
-        Vec2 p0 = pos(ctx_->canonical[g], fg, v0), p1 = pos(ctx_->canonical[g], fg, v1);
-        Vec2 q0 = pos(tri[f], m.faces[f], v0), q1 = pos(tri[f], m.faces[f], v1);
-        Vec2 dp = p1 - p0, dq = q1 - q0;
-        double n = norm(dp) * norm(dq);
-        Rigid r;
-        if (n > 0) {
-          r.c = dot(dp, dq) / n;
-          r.s = cross(dp, dq) / n;
-        }
-        r.from = (p0 + p1) * 0.5;
-        r.to = (q0 + q1) * 0.5;
-        for (int i = 0; i < 3; ++i)
-          tri[g][i] = r(ctx_->canonical[g][i]);
-        queue.push_back(g);
-      }
-    }
+    for (std::size_t head = 0; head < queue.size(); ++head)
+      place_fold_neighbours(queue[head], id, tri, queue);
     piece_size_[id] = static_cast<int>(queue.size());
   }
+  return tri;
+}
+
+void CutTree::place_fold_neighbours(int f, int id, std::vector<Triangle2>& tri, std::vector<int>& queue) {
+  const Mesh& m = *ctx_->mesh;
+  auto pos = [](const Triangle2& t, const std::array<int, 3>& face, int v) {
+    for (int i = 0; i < 3; ++i)
+      if (face[i] == v) return t[i];
+    return t[0];
+  };
+  for (int e : m.face_edges[f]) {
+    if (!folded(e) || e == parent_edge_[f]) continue;
+    int g = across(e, f);
+    if (piece_[g] >= 0) {
+      state_[EdgeId(e)] = EdgeState::Cut;  // closes a cycle: a forest cannot fold it
+      continue;
+    }
+    piece_[g] = id;
+    parent_edge_[g] = e;
+    // Place g by the motion taking its canonical copy of e onto f's placed copy.
+    const auto& fg = m.faces[g];
+    int v0 = m.edges[e].v[0], v1 = m.edges[e].v[1];
+    const RigidMotion r = motion_onto(pos(ctx_->canonical[g], fg, v0), pos(ctx_->canonical[g], fg, v1),
+                                      pos(tri[f], m.faces[f], v0), pos(tri[f], m.faces[f], v1));
+    for (int i = 0; i < 3; ++i)
+      tri[g][i] = r(ctx_->canonical[g][i]);
+    queue.push_back(g);
+  }
+}
+
+void CutTree::count_cuts() {
+  const Mesh& m = *ctx_->mesh;
   cut_count_.assign(m.num_vertices(), 0);
-  for (int e = 0; e < ne; ++e) {
-    if (fold_[e]) continue;
+  for (int e = 0; e < m.num_edges(); ++e) {
+    if (folded(e)) continue;
     ++cut_count_[m.edges[e].v[0]];
     ++cut_count_[m.edges[e].v[1]];
   }
-  for (int f = 0; f < nf; ++f) {
+}
+
+void CutTree::index_all(const std::vector<Triangle2>& tri) {
+  for (int f = 0; f < num_faces(); ++f) {
     index_.query(
         tri[f], piece_[f], [](int) { return false; },
         [&](int g) {
@@ -136,20 +138,13 @@ CutTree::CutTree(const UnfoldContext& context, std::vector<char> fold)
   }
 }
 
-std::vector<char> CutTree::cut_flags() const {
-  std::vector<char> cut(fold_.size());
-  for (std::size_t e = 0; e < fold_.size(); ++e)
-    cut[e] = fold_[e] ? 0 : 1;
-  return cut;
+FaceId CutTree::across(EdgeId e, FaceId f) const {
+  const auto& edge = ctx_->mesh->edge(e);
+  return edge.face_id(0) == f ? edge.face_id(1) : edge.face_id(0);
 }
 
-int CutTree::across(int e, int f) const {
-  const auto& edge = ctx_->mesh->edges[e];
-  return edge.face[0] == f ? edge.face[1] : edge.face[0];
-}
-
-bool CutTree::curvature_allows_fold(int e) const {
-  const auto& edge = ctx_->mesh->edges[e];
+bool CutTree::curvature_allows_fold(EdgeId e) const {
+  const auto& edge = ctx_->mesh->edge(e);
   if (edge.boundary()) return false;
   for (int v : edge.v)
     if (cut_count_[v] - 1 < ctx_->required_cuts[v]) return false;
@@ -164,23 +159,16 @@ Vec2 CutTree::corner_position(int f, int v) const {
   return t[0];
 }
 
-CutTree::Rigid CutTree::glue_motion(int e, int moving, int fixed) const {
-  int v0 = ctx_->mesh->edges[e].v[0], v1 = ctx_->mesh->edges[e].v[1];
-  Vec2 p0 = corner_position(moving, v0), p1 = corner_position(moving, v1);
-  Vec2 q0 = corner_position(fixed, v0), q1 = corner_position(fixed, v1);
-  Vec2 dp = p1 - p0, dq = q1 - q0;
-  double n = norm(dp) * norm(dq);
-  Rigid r;
-  if (n > 0) {
-    r.c = dot(dp, dq) / n;
-    r.s = cross(dp, dq) / n;
+RigidMotion CutTree::glue_motion(EdgeId e, int moving, int fixed) const {
+  int v0 = ctx_->mesh->edge(e).v[0], v1 = ctx_->mesh->edge(e).v[1];
+  RigidMotion r = motion_onto(corner_position(moving, v0), corner_position(moving, v1),
+                              corner_position(fixed, v0), corner_position(fixed, v1));
+  if (r.c != 1 || r.s != 0) {
     // Renormalise so the motion stays a rotation to the last bit, whatever the rounding above.
     double k = std::hypot(r.c, r.s);
     r.c /= k;
     r.s /= k;
   }
-  r.from = (p0 + p1) * 0.5;
-  r.to = (q0 + q1) * 0.5;
   return r;
 }
 
@@ -234,7 +222,7 @@ void CutTree::collect_piece(int f, std::vector<int>& faces) {
   for (std::size_t head = 0; head < faces.size(); ++head) {
     int x = faces[head], from = via_[head];
     for (int e : m.face_edges[x]) {
-      if (!fold_[e] || e == from) continue;
+      if (!folded(e) || e == from) continue;
       faces.push_back(across(e, x));
       via_.push_back(e);
     }
@@ -255,7 +243,7 @@ void CutTree::rebuild_parents() {
     for (std::size_t head = 0; head < queue.size(); ++head) {
       int f = queue[head];
       for (int e : m.face_edges[f]) {
-        if (!fold_[e] || e == parent_edge_[f]) continue;
+        if (!folded(e) || e == parent_edge_[f]) continue;
         int g = across(e, f);
         if (parent_[g] != -2) continue;
         parent_[g] = f;
@@ -268,28 +256,30 @@ void CutTree::rebuild_parents() {
   parents_dirty_ = false;
 }
 
-std::vector<int> CutTree::path(int f, int g) {
+std::vector<EdgeId> CutTree::path(FaceId face_f, FaceId face_g) {
   if (parents_dirty_) rebuild_parents();
-  std::vector<int> up_f, up_g;
+  int f = face_f.index(), g = face_g.index();
+  std::vector<EdgeId> up_f, up_g;
   while (depth_[f] > depth_[g]) {
-    up_f.push_back(parent_edge_[f]);
+    up_f.emplace_back(parent_edge_[f]);
     f = parent_[f];
   }
   while (depth_[g] > depth_[f]) {
-    up_g.push_back(parent_edge_[g]);
+    up_g.emplace_back(parent_edge_[g]);
     g = parent_[g];
   }
   while (f != g && f >= 0 && g >= 0) {
-    up_f.push_back(parent_edge_[f]);
+    up_f.emplace_back(parent_edge_[f]);
     f = parent_[f];
-    up_g.push_back(parent_edge_[g]);
+    up_g.emplace_back(parent_edge_[g]);
     g = parent_[g];
   }
   up_f.insert(up_f.end(), up_g.rbegin(), up_g.rend());
   return up_f;
 }
 
-void CutTree::smaller_side(int e, std::vector<int>& side) {
+void CutTree::smaller_side(EdgeId edge, std::vector<int>& side) {
+  const int e = edge.index();
   const Mesh& m = *ctx_->mesh;
   if (mark_counter_ >= 0xFFFFFFF0u) {
     std::fill(side_mark_.begin(), side_mark_.end(), 0);
@@ -308,7 +298,7 @@ void CutTree::smaller_side(int e, std::vector<int>& side) {
   auto step = [&](std::vector<int>& q, std::size_t& h, std::uint32_t s) {
     int f = q[h++];
     for (int x : m.face_edges[f]) {
-      if (!fold_[x] || x == e) continue;
+      if (!folded(x) || x == e) continue;
       int g = across(x, f);
       if (side_mark_[g] == s) continue;
       side_mark_[g] = s;
@@ -339,11 +329,11 @@ int CutTree::cross_overlaps(const std::vector<int>& side) const {
   return n;
 }
 
-int CutTree::reattach_cost(const std::vector<int>& side, int attach, int limit) {
-  const auto& edge = ctx_->mesh->edges[attach];
+int CutTree::reattach_cost(const std::vector<int>& side, EdgeId attach, int limit) {
+  const auto& edge = ctx_->mesh->edge(attach);
   int moving = in_side(edge.face[0]) ? edge.face[0] : edge.face[1];
   int fixed = moving == edge.face[0] ? edge.face[1] : edge.face[0];
-  Rigid r = glue_motion(attach, moving, fixed);
+  RigidMotion r = glue_motion(attach, moving, fixed);
   int count = 0;
   for (int f : side) {
     const Triangle2& t = index_.triangle(f);
@@ -355,7 +345,7 @@ int CutTree::reattach_cost(const std::vector<int>& side, int attach, int limit) 
   return count;
 }
 
-void CutTree::move_faces(const std::vector<int>& faces, const Rigid& r, int new_piece) {
+void CutTree::move_faces(const std::vector<int>& faces, const RigidMotion& r, int new_piece) {
   std::vector<Triangle2> moved(faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const Triangle2& t = index_.triangle(faces[i]);
@@ -378,12 +368,12 @@ void CutTree::move_faces(const std::vector<int>& faces, const Rigid& r, int new_
   }
 }
 
-void CutTree::reattach(const std::vector<int>& side, int cut_edge, int attach) {
+void CutTree::reattach(const std::vector<int>& side, EdgeId cut_edge, EdgeId attach) {
   const Mesh& m = *ctx_->mesh;
-  const auto& edge = m.edges[attach];
+  const auto& edge = m.edge(attach);
   int moving = in_side(edge.face[0]) ? edge.face[0] : edge.face[1];
   int fixed = moving == edge.face[0] ? edge.face[1] : edge.face[0];
-  Rigid r = glue_motion(attach, moving, fixed);
+  RigidMotion r = glue_motion(attach, moving, fixed);
   for (int f : side) {
     for (std::size_t i = partners_[f].size(); i-- > 0;) {
       int g = partners_[f][i];
@@ -391,16 +381,16 @@ void CutTree::reattach(const std::vector<int>& side, int cut_edge, int attach) {
     }
   }
   move_faces(side, r, piece_[fixed]);
-  fold_[cut_edge] = 0;
-  for (int v : m.edges[cut_edge].v)
+  state_[cut_edge] = EdgeState::Cut;
+  for (int v : m.edge(cut_edge).v)
     ++cut_count_[v];
-  fold_[attach] = 1;
+  state_[attach] = EdgeState::Fold;
   for (int v : edge.v)
     --cut_count_[v];
   parents_dirty_ = true;
 }
 
-void CutTree::cut(int e) {
+void CutTree::cut(EdgeId e) {
   const Mesh& m = *ctx_->mesh;
   smaller_side(e, moved_);
   int old_piece = piece_[moved_[0]];
@@ -420,19 +410,19 @@ void CutTree::cut(int e) {
   piece_size_[id] = static_cast<int>(moved_.size());
   piece_size_[old_piece] -= static_cast<int>(moved_.size());
   ++piece_count_;
-  fold_[e] = 0;
-  for (int v : m.edges[e].v)
+  state_[e] = EdgeState::Cut;
+  for (int v : m.edge(e).v)
     ++cut_count_[v];
   parents_dirty_ = true;
 }
 
-int CutTree::stitch_cost(int e, int limit) {
-  const auto& edge = ctx_->mesh->edges[e];
+int CutTree::stitch_cost(EdgeId e, int limit) {
+  const auto& edge = ctx_->mesh->edge(e);
   int a = edge.face[0], b = edge.face[1];
   int moving = piece_size_[piece_[a]] <= piece_size_[piece_[b]] ? a : b;
   int fixed = moving == a ? b : a;
   collect_piece(moving, moved_);
-  Rigid r = glue_motion(e, moving, fixed);
+  RigidMotion r = glue_motion(e, moving, fixed);
   const int target = piece_[fixed];
   int count = 0;
   for (int f : moved_) {
@@ -445,21 +435,21 @@ int CutTree::stitch_cost(int e, int limit) {
   return count;
 }
 
-void CutTree::stitch(int e) {
+void CutTree::stitch(EdgeId e) {
   const Mesh& m = *ctx_->mesh;
-  const auto& edge = m.edges[e];
+  const auto& edge = m.edge(e);
   int a = edge.face[0], b = edge.face[1];
   int moving = piece_size_[piece_[a]] <= piece_size_[piece_[b]] ? a : b;
   int fixed = moving == a ? b : a;
   collect_piece(moving, moved_);
-  Rigid r = glue_motion(e, moving, fixed);
+  RigidMotion r = glue_motion(e, moving, fixed);
   int from = piece_[moving], to = piece_[fixed];
   move_faces(moved_, r, to);
   piece_size_[to] += piece_size_[from];
   piece_size_[from] = 0;
   free_pieces_.push_back(from);
   --piece_count_;
-  fold_[e] = 1;
+  state_[e] = EdgeState::Fold;
   for (int v : edge.v)
     --cut_count_[v];
   parents_dirty_ = true;

@@ -7,8 +7,8 @@
 
 namespace foldkit::unfold {
 
-std::vector<char> initial_patch_folds(const UnfoldContext& ctx, double disconnected_share,
-                                      const EdgeConstraints& constraints) {
+EdgeStates initial_patches(const UnfoldContext& ctx, double disconnected_share,
+                           const EdgeConstraints& constraints) {
   const Mesh& m = *ctx.mesh;
   int interior = 0;
   for (const auto& e : m.edges)
@@ -22,12 +22,9 @@ std::vector<char> initial_patch_folds(const UnfoldContext& ctx, double disconnec
   std::vector<double> rank(m.num_edges());
   for (int i = 0; i < m.num_edges(); ++i)
     rank[order[i]] = i;
-  auto folds_below = [&](int k) {
-    std::vector<char> fold = folds_from_cuts(spanning_forest_cuts(m, rank, constraints, k));
-    return fold;
-  };
-  auto count = [](const std::vector<char>& fold) {
-    return static_cast<int>(std::count(fold.begin(), fold.end(), 1));
+  auto folds_below = [&](int k) { return spanning_forest(m, rank, constraints, k); };
+  auto count = [](const EdgeStates& state) {
+    return static_cast<int>(std::count(state.begin(), state.end(), EdgeState::Fold));
   };
   int lo = 0, hi = m.num_edges();
   while (lo < hi) {
@@ -45,10 +42,10 @@ void cut_overlaps(CutTree& tree, const EdgeConstraints& constraints) {
   while (tree.overlap_count() > 0) {
     int f = tree.overlapping_faces().front();
     int g = tree.overlap_partners(f).front();
-    int best = -1;
-    for (int e : tree.path(f, g))
-      if (!constraints.fold(e) && (best < 0 || w[e] > w[best])) best = e;
-    if (best < 0)
+    EdgeId best;
+    for (EdgeId e : tree.path(FaceId(f), FaceId(g)))
+      if (!constraints.fold(e) && (!best.valid() || w[e.index()] > w[best.index()])) best = e;
+    if (!best.valid())
       throw Error("the edges to keep folded make a piece overlap itself: keep fewer edges", ExitCode::Usage);
     tree.cut(best);
   }

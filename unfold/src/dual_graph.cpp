@@ -29,25 +29,27 @@ std::vector<double> min_perimeter_weights(const Mesh& mesh) {
   return weight;
 }
 
-std::vector<char> spanning_forest_cuts(const Mesh& mesh, const std::vector<double>& weight,
-                                       const EdgeConstraints& constraints, double threshold) {
+EdgeStates spanning_forest(const Mesh& mesh, const std::vector<double>& weight,
+                           const EdgeConstraints& constraints, double threshold) {
   const int ne = mesh.num_edges();
-  std::vector<char> cut(ne, 1);
+  EdgeStates state(ne, EdgeState::Cut);
   DisjointSets sets(mesh.num_faces());
-  std::vector<int> order;
+  std::vector<EdgeId> order;
   order.reserve(ne);
-  for (int e = 0; e < ne; ++e) {
-    if (mesh.edges[e].boundary() || constraints.cut(e)) continue;
+  for (EdgeId e : all_ids<EdgeId>(ne)) {
+    const MeshEdge& edge = mesh.edge(e);
+    if (edge.boundary() || constraints.cut(e)) continue;
     if (constraints.fold(e)) {
-      if (sets.join(mesh.edges[e].face[0], mesh.edges[e].face[1])) cut[e] = 0;
+      if (sets.join(edge.face[0], edge.face[1])) state[e] = EdgeState::Fold;
       continue;
     }
-    if (weight[e] < threshold) order.push_back(e);
+    if (weight[e.index()] < threshold) order.push_back(e);
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] < weight[b]; });
-  for (int e : order)
-    if (sets.join(mesh.edges[e].face[0], mesh.edges[e].face[1])) cut[e] = 0;
-  return cut;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](EdgeId a, EdgeId b) { return weight[a.index()] < weight[b.index()]; });
+  for (EdgeId e : order)
+    if (sets.join(mesh.edge(e).face[0], mesh.edge(e).face[1])) state[e] = EdgeState::Fold;
+  return state;
 }
 
 int count_components(const Mesh& mesh) {

@@ -14,7 +14,7 @@ namespace {
 double margin_ratio(const CutTree& tree) {
   std::map<int, Box2> boxes;
   double area = 0;
-  for (int f = 0; f < tree.num_faces(); ++f) {
+  for (FaceId f : all_ids<FaceId>(tree.num_faces())) {
     const Triangle2& t = tree.flat(f);
     area += signed_area(t);
     Box2& b = boxes[tree.piece(f)];
@@ -49,7 +49,7 @@ double boundary_distance_ratio(const CutTree& tree) {
   const Mesh& m = tree.mesh();
   const int nf = m.num_faces();
   // Half-edge (f, i): corner i of face f, the edge faces[f][i] -> faces[f][i+1]. On the outline when cut.
-  auto is_cut = [&](int f, int i) { return !tree.folded(m.face_edges[f][i]); };
+  auto is_cut = [&](int f, int i) { return !tree.folded(m.edges_of(FaceId(f))[i]); };
   std::vector<int> loop_of(3 * nf, -1), pos(3 * nf, -1);
   std::vector<int> loop_len;
   for (int f0 = 0; f0 < nf; ++f0) {
@@ -66,7 +66,7 @@ double boundary_distance_ratio(const CutTree& tree) {
         int guard = 0;
         while (!is_cut(f, j) && guard++ < 64) {
           int e = m.face_edges[f][j];
-          int g = tree.across(e, f);
+          int g = tree.across(EdgeId(e), FaceId(f)).index();
           int k = 0;
           while (m.face_edges[g][k] != e)
             ++k;
@@ -85,8 +85,8 @@ double boundary_distance_ratio(const CutTree& tree) {
   if (total == 0) return 0;
   double sum = 0;
   int seams = 0;
-  for (int e = 0; e < m.num_edges(); ++e) {
-    const auto& me = m.edges[e];
+  for (EdgeId e : all_ids<EdgeId>(m.num_edges())) {
+    const auto& me = m.edge(e);
     if (me.boundary() || tree.folded(e)) continue;
     int h0 = 3 * me.face[0] + me.corner[0], h1 = 3 * me.face[1] + me.corner[1];
     ++seams;
@@ -108,7 +108,7 @@ FitnessTerms fitness_terms(const CutTree& tree) {
   t.pieces = tree.piece_count();
   int largest = 0;
   std::map<int, int> sizes;
-  for (int f = 0; f < tree.num_faces(); ++f)
+  for (FaceId f : all_ids<FaceId>(tree.num_faces()))
     largest = std::max(largest, ++sizes[tree.piece(f)]);
   t.rl = tree.num_faces() > 0 ? 1.0 - static_cast<double>(largest) / tree.num_faces() : 0.0;
   t.rm = margin_ratio(tree);

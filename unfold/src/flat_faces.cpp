@@ -158,19 +158,22 @@ FlatFaces find_flat_faces(const Mesh& mesh, double flat_angle_rad) {
 }
 
 void keep_flat_faces(const Mesh& mesh, const FlatFaces& flat, EdgeConstraints& constraints) {
-  const std::size_t ne = mesh.edges.size();
-  std::vector<char> user_fold = constraints.force_fold;
-  user_fold.resize(ne, 0);
-  constraints.force_cut.resize(ne, 0);
-  constraints.force_fold.assign(ne, 0);
+  const int ne = mesh.num_edges();
+  EdgeMap<EdgeRule> user = constraints.rule;
+  user.resize(ne, EdgeRule::Free);
+  // The user's cuts stay; the folds are decided again below, flat faces first.
+  EdgeMap<EdgeRule>& rule = constraints.rule;
+  rule = user;
+  for (EdgeRule& r : rule)
+    if (r == EdgeRule::MustFold) r = EdgeRule::Free;
   DisjointSets folded(mesh.num_faces());
-  auto fold = [&](std::size_t e) {
-    if (folded.join(mesh.edges[e].face[0], mesh.edges[e].face[1])) constraints.force_fold[e] = 1;
+  auto fold = [&](EdgeId e) {
+    if (folded.join(mesh.edge(e).face[0], mesh.edge(e).face[1])) rule[e] = EdgeRule::MustFold;
   };
-  for (std::size_t e = 0; e < ne; ++e)
-    if (flat.inside[e] && !constraints.force_cut[e]) fold(e);
-  for (std::size_t e = 0; e < ne; ++e)
-    if (user_fold[e]) fold(e);
+  for (EdgeId e : all_ids<EdgeId>(ne))
+    if (flat.inside[e.index()] && rule[e] != EdgeRule::MustCut) fold(e);
+  for (EdgeId e : all_ids<EdgeId>(ne))
+    if (user[e] == EdgeRule::MustFold) fold(e);
 }
 
 void mark_flat_faces(const FlatFaces& flat, Unfolding& unfolding) {

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -80,16 +81,26 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Least time between two progress reports.
+constexpr double kReportInterval_s = 0.2;
+// Score of an individual not yet evaluated: worse than any fitness.
+constexpr double kUnscored = 1e300;
+// The rearrangement may stitch and cut this many times per face before it gives up.
+constexpr int kRearrangeOperationsPerFace = 4;
+// Run r's generator is seeded from seed * kSeedMix + r + 1 (the golden ratio in 64 bits: runs of
+// neighbouring seeds do not share streams).
+constexpr std::uint64_t kSeedMix = 0x9E3779B97F4A7C15ull;
+
 struct Individual {
   std::vector<int> genes;  // stitchable edge ids, successes first after evaluation
   int successes = 0;
-  double score = 1e300;
+  double score = kUnscored;
   int pieces = 0;
 };
 
 struct RunResult {
-  std::vector<char> fold;
-  double score = 1e300;
+  EdgeStates tree;
+  double score = kUnscored;
   int pieces = 0;
   int generations = 0;
   double share = 0;
@@ -105,13 +116,13 @@ class GaRun {
         components_(components),
         deadline_(deadline),
         cancel_(cancel),
-        base_(ctx, initial_patch_folds(ctx, share, opt.constraints)) {
+        base_(ctx, initial_patches(ctx, share, opt.constraints)) {
     cut_overlaps(base_, opt.constraints);
     const Mesh& m = *ctx.mesh;
-    for (int e = 0; e < m.num_edges(); ++e) {
-      const auto& me = m.edges[e];
+    for (EdgeId e : all_ids<EdgeId>(m.num_edges())) {
+      const auto& me = m.edge(e);
       if (me.boundary() || base_.folded(e) || opt.constraints.cut(e)) continue;
-      if (base_.piece(me.face[0]) != base_.piece(me.face[1]) && base_.curvature_allows_fold(e))
+      if (base_.piece(me.face_id(0)) != base_.piece(me.face_id(1)) && base_.curvature_allows_fold(e))
         stitchable_.push_back(e);
     }
   }
@@ -173,24 +184,24 @@ class GaRun {
   bool out_of_time() const { return cancel_.load(std::memory_order_relaxed) || Clock::now() >= deadline_; }
 
   bool consider(Individual& ind) {
-    std::vector<char> fold;
-    evaluate(ind, &fold);
+    EdgeStates tree;
+    evaluate(ind, &tree);
     if (ind.score >= best_.score) return false;
     best_.score = ind.score;
     best_.pieces = ind.pieces;
-    best_.fold = std::move(fold);
+    best_.tree = std::move(tree);
     return true;
   }
 
-  void evaluate(Individual& ind, std::vector<char>* fold_out) {
+  void evaluate(Individual& ind, EdgeStates* tree_out) {
     CutTree tree = base_;
     std::vector<int> ok, failed;
     ok.reserve(ind.genes.size());
     for (int id : ind.genes) {
-      const int e = stitchable_[id];
-      const auto& me = tree.mesh().edges[e];
-      bool success = tree.piece(me.face[0]) != tree.piece(me.face[1]) && tree.curvature_allows_fold(e) &&
-                     tree.stitch_cost(e, 0) == 0;
+      const EdgeId e = stitchable_[id];
+      const auto& me = tree.mesh().edge(e);
+      bool success = tree.piece(me.face_id(0)) != tree.piece(me.face_id(1)) &&
+                     tree.curvature_allows_fold(e) && tree.stitch_cost(e, 0) == 0;
       if (success) tree.stitch(e);
       (success ? ok : failed).push_back(id);
     }
@@ -200,7 +211,7 @@ class GaRun {
     const FitnessTerms terms = fitness_terms(tree);
     ind.pieces = terms.pieces;
     ind.score = fitness(terms, opt_.weights);
-    if (fold_out) *fold_out = tree.fold_flags();
+    if (tree_out) *tree_out = tree.states();
   }
 
   const GaOptions& opt_;
@@ -210,7 +221,7 @@ class GaRun {
   Clock::time_point deadline_;
   std::atomic<bool>& cancel_;
   CutTree base_;
-  std::vector<int> stitchable_;
+  std::vector<EdgeId> stitchable_;
   std::vector<Individual> population_;
   RunResult best_;
   int stagnant_ = 0;
@@ -220,8 +231,8 @@ class GaRun {
 int fewest_pieces(const Mesh& m, const EdgeConstraints& constraints) {
   DisjointSets joined(m.num_faces());
   int n = m.num_faces();
-  for (int e = 0; e < m.num_edges(); ++e) {
-    const auto& me = m.edges[e];
+  for (EdgeId e : all_ids<EdgeId>(m.num_edges())) {
+    const auto& me = m.edge(e);
     if (me.boundary() || constraints.cut(e)) continue;
     if (joined.join(me.face[0], me.face[1])) --n;
   }
@@ -234,41 +245,46 @@ std::string percent(double share) {
 
 }  // namespace
 
-GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const ProgressFn& progress) {
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+namespace {
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Runs every share to its end and returns each run's best. Runs advance in lockstep, one generation per
+// round, and stop together after the first round in which one reaches one piece per component. Each run
+// has its own generator seeded from (seed, run index), so neither the thread count nor the timing of
+// threads changes what a round produces.
+std::vector<RunResult> evolve(const UnfoldContext& ctx, const GaOptions& opt, int components,
+                              Clock::time_point start, const ProgressFn& progress) {
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(std::max(0.0, opt.time_limit_s)));
-  const int components = fewest_pieces(*ctx.mesh, opt.constraints);
   const int runs = static_cast<int>(opt.shares.size());
   std::atomic<bool> cancel{false};
   int threads =
       opt.threads > 0 ? opt.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::clamp(threads, 1, std::max(1, runs));
-  // Runs advance in lockstep, one generation per round, and stop together after the first round in
-  // which one reaches one piece per component. Each run has its own generator seeded from (seed, run
-  // index), so neither the thread count nor the timing of threads changes what a round produces.
   std::vector<std::unique_ptr<GaRun>> run(runs);
   auto parallel = [&](const auto& job) { run_parallel(runs, threads, job); };
   parallel([&](int r) {
     run[r] = std::make_unique<GaRun>(ctx, opt, opt.shares[r],
-                                     opt.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1,
-                                     components, deadline, cancel);
+                                     opt.seed * kSeedMix + static_cast<std::uint64_t>(r) + 1, components,
+                                     deadline, cancel);
     run[r]->start();
   });
   int generation = 0;
   double next_report = 0;
   while (true) {
     bool solved = false, all_done = true;
-    int best_pieces = 1 << 30;
+    int best_pieces = std::numeric_limits<int>::max();
     for (auto& r : run) {
       solved |= r->best().pieces <= components;
       all_done &= r->done();
       best_pieces = std::min(best_pieces, r->best().pieces);
     }
-    if (progress && elapsed() >= next_report) {
-      next_report = elapsed() + 0.2;
-      if (!progress({"ga", generation, best_pieces, 0, elapsed()})) cancel = true;
+    if (progress && seconds_since(start) >= next_report) {
+      next_report = seconds_since(start) + kReportInterval_s;
+      if (!progress({"ga", generation, best_pieces, 0, seconds_since(start)})) cancel = true;
     }
     if (solved || all_done || cancel) break;
     ++generation;
@@ -279,39 +295,56 @@ GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const Pr
   std::vector<RunResult> results(runs);
   for (int r = 0; r < runs; ++r)
     results[r] = run[r]->best();
+  return results;
+}
 
+// Where the GA left more pieces than components: the §6 rearrangement, else (when allowed) the repair
+// search within `seconds_left`, whichever leaves fewer pieces. Appends what it did to `method`.
+void join_remaining_pieces(const UnfoldContext& ctx, const GaOptions& opt, int components,
+                           double seconds_left, const ProgressFn& progress, CutTree& tree,
+                           std::string& method) {
+  if (tree.piece_count() <= components) return;
+  CutTree rearranged = tree;
+  if (rearrange_pieces(rearranged, components, opt.constraints,
+                       kRearrangeOperationsPerFace * ctx.mesh->num_faces())) {
+    method += "+rearrange";
+    tree = std::move(rearranged);
+  } else if (opt.repair_with_search) {
+    SearchOptions so;
+    so.seed = opt.seed;
+    so.time_limit_s = std::max(0.0, seconds_left);
+    so.constraints = opt.constraints;
+    so.stage = "ga+search";
+    SearchResult sr = search_unfold(ctx, tree.states(), so, progress);
+    CutTree searched(ctx, sr.edges);
+    if (searched.piece_count() < rearranged.piece_count()) {
+      method += "+search";
+      tree = std::move(searched);
+    } else {
+      method += "+rearrange";
+      tree = std::move(rearranged);
+    }
+  }
+}
+
+}  // namespace
+
+GaResult genetic_unfold(const UnfoldContext& ctx, const GaOptions& opt, const ProgressFn& progress) {
+  const auto start = Clock::now();
+  const int components = fewest_pieces(*ctx.mesh, opt.constraints);
+  const std::vector<RunResult> results = evolve(ctx, opt, components, start, progress);
   int win = 0;
-  for (int r = 1; r < runs; ++r)
+  for (int r = 1; r < static_cast<int>(results.size()); ++r)
     if (results[r].score < results[win].score) win = r;
-  RunResult& best = results[win];
+  const RunResult& best = results[win];
   GaResult out;
   out.share = best.share;
   out.generations = best.generations;
   out.method = "ga(" + percent(best.share) + ")";
-  CutTree tree(ctx, best.fold);
-  if (tree.piece_count() > components) {
-    CutTree rearranged = tree;
-    if (rearrange_pieces(rearranged, components, opt.constraints, 4 * ctx.mesh->num_faces())) {
-      out.method += "+rearrange";
-      tree = std::move(rearranged);
-    } else if (opt.repair_with_search) {
-      SearchOptions so;
-      so.seed = opt.seed;
-      so.time_limit_s = std::max(0.0, opt.time_limit_s - elapsed());
-      so.constraints = opt.constraints;
-      so.stage = "ga+search";
-      SearchResult sr = search_unfold(ctx, tree.fold_flags(), so, progress);
-      CutTree searched(ctx, folds_from_cuts(sr.cut));
-      if (searched.piece_count() < rearranged.piece_count()) {
-        out.method += "+search";
-        tree = std::move(searched);
-      } else {
-        out.method += "+rearrange";
-        tree = std::move(rearranged);
-      }
-    }
-  }
-  out.cut = tree.cut_flags();
+  CutTree tree(ctx, best.tree);
+  join_remaining_pieces(ctx, opt, components, opt.time_limit_s - seconds_since(start), progress, tree,
+                        out.method);
+  out.edges = tree.states();
   out.pieces = tree.piece_count();
   out.score = fitness(fitness_terms(tree), opt.weights);
   return out;

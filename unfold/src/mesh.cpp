@@ -23,21 +23,15 @@ std::string vnum(int v) {
   return std::to_string(v + 1);
 }
 
-}  // namespace
-
-Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces, std::string name) {
-  Mesh mesh;
-  mesh.vertices = std::move(vertices);
-  mesh.faces = std::move(faces);
-  mesh.name = std::move(name);
+// Finite coordinates; faces with three distinct vertices in range.
+void check_vertices_and_faces(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
-  const int nf = mesh.num_faces();
   for (int v = 0; v < nv; ++v) {
     const Vec3 p = mesh.vertices[v];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError(mesh.name, "vertex " + vnum(v) + " has a non-finite coordinate");
   }
-  for (int f = 0; f < nf; ++f) {
+  for (int f = 0; f < mesh.num_faces(); ++f) {
     const auto& t = mesh.faces[f];
     for (int i = 0; i < 3; ++i)
       if (t[i] < 0 || t[i] >= nv)
@@ -47,7 +41,12 @@ Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       throw InputError(mesh.name, "face " + std::to_string(f + 1) + " uses a vertex twice");
   }
+}
 
+// Builds mesh.edges and mesh.face_edges; every edge in at most two faces, traversed in opposite
+// directions.
+void build_edges(Mesh& mesh) {
+  const int nf = mesh.num_faces();
   std::unordered_map<std::uint64_t, int> edge_of;
   edge_of.reserve(static_cast<std::size_t>(nf) * 2);
   mesh.face_edges.assign(nf, {-1, -1, -1});
@@ -76,8 +75,12 @@ Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces
       mesh.face_edges[f][i] = it->second;
     }
   }
+}
 
-  // Corner c = 3f+i. Corners of one vertex in faces adjacent across an edge through it form one fan.
+// Every vertex in some face, and its faces one fan. Corner c = 3f+i; corners of one vertex in faces
+// adjacent across an edge through it join one fan.
+void check_vertex_fans(const Mesh& mesh) {
+  const int nv = mesh.num_vertices(), nf = mesh.num_faces();
   DisjointSets fans(3 * nf);
   for (const MeshEdge& e : mesh.edges) {
     if (e.boundary()) continue;
@@ -104,6 +107,18 @@ Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces
   }
   for (int v = 0; v < nv; ++v)
     if (fan_of_vertex[v] < 0) throw InputError(mesh.name, "vertex " + vnum(v) + " belongs to no face");
+}
+
+}  // namespace
+
+Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces, std::string name) {
+  Mesh mesh;
+  mesh.vertices = std::move(vertices);
+  mesh.faces = std::move(faces);
+  mesh.name = std::move(name);
+  check_vertices_and_faces(mesh);
+  build_edges(mesh);
+  check_vertex_fans(mesh);
   return mesh;
 }
 

@@ -213,15 +213,20 @@ void check_flat_faces_fit(const Unfolding& u, const Units& units, const Fitter& 
     double best = 1e300;
     for (const auto& pts : units.points)
       best = std::min(best, fit_in_rect(pts, o.room_mm).scale);
-    throw LayoutError(
-        "a flat face (" + std::to_string(units.faces[k].size()) + " triangles) is larger than the " +
-        format_size(o.room_mm.x) + "x" + format_size(o.room_mm.y) + " mm room for a part at --size " +
-        format_size(o.mm_per_unit * u.model_extent) + "mm; the largest --size that fits is " +
-        format_size(std::min(best * u.model_extent, o.mm_per_unit * u.model_extent * 0.99)) + "mm");
+    throw PartTooLarge(static_cast<int>(units.faces[k].size()), o.room_mm, o.mm_per_unit * u.model_extent,
+                       std::min(best * u.model_extent, o.mm_per_unit * u.model_extent * 0.99));
   }
 }
 
 }  // namespace
+
+std::string PartTooLarge::message(int triangles, Vec2 room_mm, double asked_mm, double largest_mm,
+                                  const std::string& size_name) {
+  return "a flat face (" + std::to_string(triangles) + " triangles) is larger than the " +
+         format_size(room_mm.x) + "x" + format_size(room_mm.y) + " mm room for a part at " + size_name + " " +
+         format_size(asked_mm) + "mm; the largest " + size_name + " that fits is " + format_size(largest_mm) +
+         "mm";
+}
 
 std::vector<int> flat_face_of(const Unfolding& u) {
   DisjointSets flat_faces(u.num_faces());
@@ -244,9 +249,7 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   const Fitter fitter(o.mm_per_unit, o.room_mm * std::clamp(o.room_fraction, 0.05, 1.0));
   const std::vector<int> flat_face = flat_face_of(u);
 
-  std::vector<char> cut(u.edges.size(), 0);
-  for (std::size_t e = 0; e < u.edges.size(); ++e)
-    cut[e] = u.edges[e].cut ? 1 : 0;
+  EdgeStates state = edge_states(u);
   bool changed = false;
   std::vector<int> part(u.num_faces(), -1);
   const std::vector<std::vector<int>> pieces = u.piece_faces();
@@ -274,13 +277,13 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
         const UnfoldEdge& edge = u.edges[e];
         if (edge.cut || edge.boundary()) continue;
         if (part[edge.face[0]] != part[edge.face[1]]) {
-          cut[e] = 1;
+          state[EdgeId(static_cast<int>(e))] = EdgeState::Cut;
           changed = true;
         }
       }
   }
   if (changed) {
-    result.unfolding = flatten(mesh, cut);
+    result.unfolding = flatten(mesh, state);
     for (std::size_t e = 0; e < u.edges.size(); ++e)
       result.unfolding.edges[e].inside_face = u.edges[e].inside_face && !result.unfolding.edges[e].cut;
   }

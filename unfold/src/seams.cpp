@@ -22,6 +22,23 @@ std::string edge_name(const std::array<int, 2>& v) {
 
 }  // namespace
 
+std::string SeamError::message(Problem problem, const std::string& edge, const std::string& mesh_name,
+                               const SeamListNames& names) {
+  switch (problem) {
+    case Problem::NotAnEdgeToCut:
+      return names.cut + ": " + edge + " is not an edge of " + mesh_name;
+    case Problem::NotAnEdgeToKeep:
+      return names.keep + ": " + edge + " is not an edge of " + mesh_name;
+    case Problem::CutAndKept:
+      return "edge " + edge + " is both in " + names.cut + " and in " + names.keep;
+    case Problem::KeptOnBoundary:
+      return names.keep + ": " + edge + " lies on the mesh boundary and cannot be folded";
+    case Problem::KeptLoop:
+      return names.keep + ": edge " + edge + " closes a loop of kept edges, which cannot lie flat";
+  }
+  return edge;
+}
+
 std::vector<FileEdge> read_edge_list(const std::filesystem::path& path, int index_base) {
   // The same checks as a mesh file: `--cut /dev/zero` or a FIFO would otherwise be read for ever.
   std::error_code ec;
@@ -110,31 +127,25 @@ EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams) {
   };
   for (int e = 0; e < mesh.num_edges(); ++e)
     edge_of[key(mesh.edges[e].v[0], mesh.edges[e].v[1])] = e;
-  auto lookup = [&](const std::array<int, 2>& v, const char* option) {
+  using Problem = SeamError::Problem;
+  auto lookup = [&](const std::array<int, 2>& v, Problem not_an_edge) {
     auto it = v[0] < mesh.num_vertices() && v[1] < mesh.num_vertices() ? edge_of.find(key(v[0], v[1]))
                                                                        : edge_of.end();
-    if (it == edge_of.end())
-      throw Error(std::string(option) + ": " + edge_name(v) + " is not an edge of " + mesh.name,
-                  ExitCode::Usage);
-    return it->second;
+    if (it == edge_of.end()) throw SeamError(not_an_edge, edge_name(v), mesh.name);
+    return EdgeId(it->second);
   };
-  result.force_cut.assign(mesh.edges.size(), 0);
-  result.force_fold.assign(mesh.edges.size(), 0);
+  result.rule.assign(mesh.num_edges(), EdgeRule::Free);
   for (const auto& v : seams.force_cut)
-    result.force_cut[lookup(v, "--cut")] = 1;
+    result.rule[lookup(v, Problem::NotAnEdgeToCut)] = EdgeRule::MustCut;
   DisjointSets kept(mesh.num_faces());
   for (const auto& v : seams.forbid_cut) {
-    int e = lookup(v, "--keep");
-    if (result.force_cut[e])
-      throw Error("edge " + edge_name(v) + " is both in --cut and in --keep", ExitCode::Usage);
-    if (mesh.edges[e].boundary())
-      throw Error("--keep: " + edge_name(v) + " lies on the mesh boundary and cannot be folded",
-                  ExitCode::Usage);
-    if (result.force_fold[e]) continue;
-    if (!kept.join(mesh.edges[e].face[0], mesh.edges[e].face[1]))
-      throw Error("--keep: edge " + edge_name(v) + " closes a loop of kept edges, which cannot lie flat",
-                  ExitCode::Usage);
-    result.force_fold[e] = 1;
+    const EdgeId e = lookup(v, Problem::NotAnEdgeToKeep);
+    if (result.rule[e] == EdgeRule::MustCut) throw SeamError(Problem::CutAndKept, edge_name(v), mesh.name);
+    if (mesh.edge(e).boundary()) throw SeamError(Problem::KeptOnBoundary, edge_name(v), mesh.name);
+    if (result.rule[e] == EdgeRule::MustFold) continue;
+    if (!kept.join(mesh.edge(e).face[0], mesh.edge(e).face[1]))
+      throw SeamError(Problem::KeptLoop, edge_name(v), mesh.name);
+    result.rule[e] = EdgeRule::MustFold;
   }
   return result;
 }

@@ -21,16 +21,17 @@ namespace foldkit::unfold {
 void join_all_pieces(CutTree& tree, const EdgeConstraints& constraints) {
   const Mesh& m = tree.mesh();
   const auto& w = tree.context().weight;
-  std::vector<int> order;
-  for (int e = 0; e < m.num_edges(); ++e) {
-    const auto& edge = m.edges[e];
+  std::vector<EdgeId> order;
+  for (EdgeId e : all_ids<EdgeId>(m.num_edges())) {
+    const auto& edge = m.edge(e);
     if (edge.boundary() || tree.folded(e) || constraints.cut(e)) continue;
-    if (tree.piece(edge.face[0]) != tree.piece(edge.face[1])) order.push_back(e);
+    if (tree.piece(edge.face_id(0)) != tree.piece(edge.face_id(1))) order.push_back(e);
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return w[a] < w[b]; });
-  for (int e : order) {
-    const auto& edge = m.edges[e];
-    if (tree.piece(edge.face[0]) != tree.piece(edge.face[1])) tree.stitch(e);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](EdgeId a, EdgeId b) { return w[a.index()] < w[b.index()]; });
+  for (EdgeId e : order) {
+    const auto& edge = m.edge(e);
+    if (tree.piece(edge.face_id(0)) != tree.piece(edge.face_id(1))) tree.stitch(e);
   }
 }
 
@@ -41,6 +42,14 @@ namespace {
 constexpr int kCheckpointSteps = 16;
 // Least time between two progress reports.
 constexpr double kReportInterval_s = 0.2;
+// The overlap change a kick starts from: larger than any move can add, so the least bad candidate wins.
+constexpr int kAnyDelta = 1 << 20;
+// Largest noise added to a minimum-perimeter weight (weights lie in [0, 1]) for a fresh tree: reorders
+// edges of similar length, keeps the long ones early.
+constexpr double kRestartWeightNoise = 0.3;
+// The first rounds are this fraction of `round_steps`, doubling up to it: small meshes finish at once.
+constexpr int kFirstRoundDivisor = 8;
+constexpr int kMinRoundSteps = 16;
 
 int uniform(std::mt19937_64& rng, std::size_t n) {
   return static_cast<int>(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng));
@@ -54,12 +63,11 @@ namespace {
 // portfolio of walks advanced in rounds reaches the same states whatever the thread timing.
 class Walker {
  public:
-  Walker(const UnfoldContext& ctx, const std::vector<char>& initial_fold, const SearchOptions& opt,
-         std::uint64_t seed)
-      : ctx_(ctx), m_(*ctx.mesh), opt_(opt), cons_(opt.constraints), rng_(seed), tree_(ctx, initial_fold) {
+  Walker(const UnfoldContext& ctx, const EdgeStates& initial, const SearchOptions& opt, std::uint64_t seed)
+      : ctx_(ctx), m_(*ctx.mesh), opt_(opt), cons_(opt.constraints), rng_(seed), tree_(ctx, initial) {
     join_all_pieces(tree_, cons_);
     best_ = run_best_ = tree_.overlap_count();
-    best_fold_ = run_fold_ = tree_.fold_flags();
+    best_tree_ = run_tree_ = tree_.states();
     tabu_until_.assign(m_.num_edges(), 0);
   }
 
@@ -69,7 +77,7 @@ class Walker {
   int moves() const { return moves_; }
   int restarts() const { return restarts_; }
   const CutTree& tree() const { return tree_; }
-  const std::vector<char>& best_fold() const { return best_fold_; }
+  const EdgeStates& best_tree() const { return best_tree_; }
 
   /// Steps, best overlap count and piece count as of the last checkpoint: safe to read from another
   /// thread while the walk runs (for progress reports).
@@ -93,7 +101,7 @@ class Walker {
   }
 
  private:
-  bool tabu(int e) const { return tabu_until_[e] > steps_; }
+  bool tabu(EdgeId e) const { return tabu_until_[e] > steps_; }
 
   void publish() {
     shown_steps_.store(steps_, std::memory_order_relaxed);
@@ -101,108 +109,143 @@ class Walker {
     shown_pieces_.store(tree_.piece_count(), std::memory_order_relaxed);
   }
 
+  // A (cut edge, re-attach edge) move.
+  struct Move {
+    EdgeId cut, attach;
+  };
+
+  // One step: a random overlapping pair, a few candidate moves on the fold path between them, the best
+  // applied; then the bookkeeping of bests, kicks and restarts.
   void step() {
     ++steps_;
+    const std::vector<EdgeId> path = random_overlap_path();
+    if (path.empty()) return;
+    // During a kick any move is taken (the least bad of the candidates), to leave a local minimum.
+    int best_delta = kick_ > 0 ? kAnyDelta : opt_.max_uphill + 1;
+    if (kick_ > 0) --kick_;
+    Move best;
+    for (int k = 0; k < opt_.candidates_per_move; ++k)
+      try_cut(path[uniform(rng_, path.size())], best_delta, best);
+    if (best.cut.valid()) apply(best);
+    if (tree_.overlap_count() < run_best_) {
+      record_best();
+    } else if (++stall_ >= opt_.restart_after && opt_.kicks_per_restart > 0 &&
+               kicks_since_restart_ < opt_.kicks_per_restart) {
+      kick_back();
+    } else if (stall_ >= opt_.restart_after) {
+      fresh_tree();
+    }
+  }
+
+  // The fold path between a random overlapping face and a random partner of it.
+  std::vector<EdgeId> random_overlap_path() {
     const auto& hot = tree_.overlapping_faces();
     int f = hot[uniform(rng_, hot.size())];
     const auto& partners = tree_.overlap_partners(f);
     int g = partners[uniform(rng_, partners.size())];
-    const std::vector<int> path = tree_.path(f, g);
-    if (path.empty()) return;
+    return tree_.path(FaceId(f), FaceId(g));
+  }
 
-    // During a kick any move is taken (the least bad of the candidates), to leave a local minimum.
-    int best_delta = kick_ > 0 ? (1 << 20) : opt_.max_uphill + 1, best_cut = -1, best_attach = -1;
-    if (kick_ > 0) --kick_;
-    for (int k = 0; k < opt_.candidates_per_move; ++k) {
-      int e = path[uniform(rng_, path.size())];
-      if (tabu(e) || cons_.fold(e)) continue;
-      tree_.smaller_side(e, side_);
-      const int old = tree_.cross_overlaps(side_);
-      const auto& ev = m_.edges[e].v;
-      attach_.clear();
-      for (int x : side_) {
-        for (int a : m_.face_edges[x]) {
-          const auto& edge = m_.edges[a];
-          if (a == e || tree_.folded(a) || edge.boundary() || cons_.cut(a) || tabu(a)) continue;
-          if (tree_.in_side(tree_.across(a, x))) continue;
-          // Curvature rule as a pre-filter: after cutting e and folding a, both ends of a must keep
-          // the cut edges their class needs, or the move creates a local overlap for certain.
-          bool ok = true;
-          for (int v : edge.v) {
-            int after = tree_.cut_count(v) - 1 + ((v == ev[0] || v == ev[1]) ? 1 : 0);
-            if (after < ctx_.required_cuts[v]) ok = false;
-          }
-          if (ok) attach_.push_back(a);
-        }
-      }
-      if (attach_.empty()) continue;
-      // Edges sharing a vertex with e turn the side about that vertex: a small motion, so few new
-      // overlaps. These are tried first; a random edge anywhere on the side gives the long jumps.
-      near_.clear();
-      for (int a : attach_) {
-        const auto& av = m_.edges[a].v;
-        if (av[0] == ev[0] || av[0] == ev[1] || av[1] == ev[0] || av[1] == ev[1]) near_.push_back(a);
-      }
-      const int tries = std::min<int>(opt_.attach_tries, static_cast<int>(attach_.size()));
-      for (int t = 0; t < tries; ++t) {
-        int a = (t == 0 && opt_.near_first && !near_.empty()) ? near_[uniform(rng_, near_.size())]
-                                                              : attach_[uniform(rng_, attach_.size())];
-        const int limit = old + best_delta - 1;
-        if (limit < 0) break;
-        int cost = tree_.reattach_cost(side_, a, limit);
-        if (cost <= limit) {
-          best_delta = cost - old;
-          best_cut = e;
-          best_attach = a;
-        }
+  // Moves cutting e: tries up to attach_tries re-attach edges of its smaller side; keeps in `best` the
+  // first that changes the overlap count by less than `best_delta` (which it lowers).
+  void try_cut(EdgeId e, int& best_delta, Move& best) {
+    if (tabu(e) || cons_.fold(e)) return;
+    tree_.smaller_side(e, side_);
+    const int old = tree_.cross_overlaps(side_);
+    collect_attach_edges(e);
+    if (attach_.empty()) return;
+    const int tries = std::min<int>(opt_.attach_tries, static_cast<int>(attach_.size()));
+    for (int t = 0; t < tries; ++t) {
+      const EdgeId a = (t == 0 && opt_.near_first && !near_.empty()) ? near_[uniform(rng_, near_.size())]
+                                                                     : attach_[uniform(rng_, attach_.size())];
+      const int limit = old + best_delta - 1;
+      if (limit < 0) break;
+      int cost = tree_.reattach_cost(side_, a, limit);
+      if (cost <= limit) {
+        best_delta = cost - old;
+        best = {e, a};
       }
     }
-    if (best_cut >= 0) {
-      tree_.smaller_side(best_cut, side_);
-      tree_.reattach(side_, best_cut, best_attach);
-      tabu_until_[best_cut] = tabu_until_[best_attach] = steps_ + opt_.tabu_tenure;
-      ++moves_;
+  }
+
+  // attach_: the cut edges from side_ (the smaller side of e) to the rest of its piece that may fold;
+  // near_: those of them sharing a vertex with e.
+  void collect_attach_edges(EdgeId e) {
+    const auto& ev = m_.edge(e).v;
+    attach_.clear();
+    for (int x : side_) {
+      for (EdgeId a : m_.edges_of(FaceId(x))) {
+        const auto& edge = m_.edge(a);
+        if (a == e || tree_.folded(a) || edge.boundary() || cons_.cut(a) || tabu(a)) continue;
+        if (tree_.in_side(tree_.across(a, FaceId(x)))) continue;
+        // Curvature rule as a pre-filter: after cutting e and folding a, both ends of a must keep
+        // the cut edges their class needs, or the move creates a local overlap for certain.
+        bool ok = true;
+        for (int v : edge.v) {
+          int after = tree_.cut_count(VertexId(v)) - 1 + ((v == ev[0] || v == ev[1]) ? 1 : 0);
+          if (after < ctx_.required_cuts[v]) ok = false;
+        }
+        if (ok) attach_.push_back(a);
+      }
     }
-    if (tree_.overlap_count() < run_best_) {
+    // Edges sharing a vertex with e turn the side about that vertex: a small motion, so few new
+    // overlaps. These are tried first; a random edge anywhere on the side gives the long jumps.
+    near_.clear();
+    for (EdgeId a : attach_) {
+      const auto& av = m_.edge(a).v;
+      if (av[0] == ev[0] || av[0] == ev[1] || av[1] == ev[0] || av[1] == ev[1]) near_.push_back(a);
+    }
+  }
+
+  void apply(const Move& move) {
+    tree_.smaller_side(move.cut, side_);
+    tree_.reattach(side_, move.cut, move.attach);
+    tabu_until_[move.cut] = tabu_until_[move.attach] = steps_ + opt_.tabu_tenure;
+    ++moves_;
+  }
+
+  void record_best() {
+    run_best_ = tree_.overlap_count();
+    run_tree_ = tree_.states();
+    stall_ = 0;
+    if (opt_.episode_best) kicks_since_restart_ = 0;
+    if (run_best_ < best_) {
+      best_ = run_best_;
+      best_tree_ = run_tree_;
+    }
+  }
+
+  // Back to the best tree of this episode, then a few forced moves: stays near it (which a fresh tree
+  // would throw away) while changing enough to escape its local minimum.
+  void kick_back() {
+    tree_ = CutTree(ctx_, run_tree_);
+    std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
+    kick_ = opt_.kick_moves;
+    stall_ = 0;
+    ++kicks_since_restart_;
+    ++restarts_;
+  }
+
+  // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but different
+  // enough to leave a region the walk keeps returning to. It starts a new episode: its descent is not
+  // cut short by kicks back to the old best tree.
+  void fresh_tree() {
+    kicks_since_restart_ = 0;
+    std::vector<double> w = ctx_.weight;
+    std::uniform_real_distribution<double> noise(0.0, kRestartWeightNoise);
+    for (double& x : w)
+      x += noise(rng_);
+    tree_ = CutTree(ctx_, spanning_forest(m_, w, cons_));
+    std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
+    stall_ = 0;
+    ++restarts_;
+    if (opt_.episode_best) {
       run_best_ = tree_.overlap_count();
-      run_fold_ = tree_.fold_flags();
-      stall_ = 0;
-      if (opt_.episode_best) kicks_since_restart_ = 0;
-      if (run_best_ < best_) {
-        best_ = run_best_;
-        best_fold_ = run_fold_;
-      }
-    } else if (++stall_ >= opt_.restart_after && opt_.kicks_per_restart > 0 &&
-               kicks_since_restart_ < opt_.kicks_per_restart) {
-      // Back to the best tree of this episode, then a few forced moves: stays near it (which a
-      // fresh tree would throw away) while changing enough to escape its local minimum.
-      tree_ = CutTree(ctx_, run_fold_);
-      std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
-      kick_ = opt_.kick_moves;
-      stall_ = 0;
-      ++kicks_since_restart_;
-      ++restarts_;
-    } else if (stall_ >= opt_.restart_after) {
-      kicks_since_restart_ = 0;
-      // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but
-      // different enough to leave a region the walk keeps returning to. It starts a new episode:
-      // its descent is not cut short by kicks back to the old best tree.
-      std::vector<double> w = ctx_.weight;
-      std::uniform_real_distribution<double> noise(0.0, 0.3);
-      for (double& x : w)
-        x += noise(rng_);
-      tree_ = CutTree(ctx_, folds_from_cuts(spanning_forest_cuts(m_, w, cons_)));
-      std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
-      stall_ = 0;
-      ++restarts_;
-      if (opt_.episode_best) {
-        run_best_ = tree_.overlap_count();
-        run_fold_ = tree_.fold_flags();
-      }
-      if (tree_.overlap_count() < best_) {
-        best_ = run_best_ = tree_.overlap_count();
-        best_fold_ = run_fold_ = tree_.fold_flags();
-      }
+      run_tree_ = tree_.states();
+    }
+    if (tree_.overlap_count() < best_) {
+      best_ = run_best_ = tree_.overlap_count();
+      best_tree_ = run_tree_ = tree_.states();
     }
   }
 
@@ -214,109 +257,142 @@ class Walker {
   CutTree tree_;
   // Fewest overlapping pairs overall and in this episode (since the last fresh tree), with their trees.
   int best_ = 0, run_best_ = 0;
-  std::vector<char> best_fold_, run_fold_;
-  std::vector<int> tabu_until_;
-  std::vector<int> side_, attach_, near_;
+  EdgeStates best_tree_, run_tree_;
+  EdgeMap<int> tabu_until_;
+  std::vector<int> side_;
+  std::vector<EdgeId> attach_, near_;
   int steps_ = 0, moves_ = 0, restarts_ = 0;
   int stall_ = 0, kick_ = 0, kicks_since_restart_ = 0;
   std::atomic<int> shown_steps_{0}, shown_best_{0}, shown_pieces_{0};
 };
 
-}  // namespace
+// The walks of one search, advanced in rounds, with the clock, the stop flag and the progress reports
+// they share.
+class Portfolio {
+ public:
+  Portfolio(const UnfoldContext& ctx, const SearchOptions& opt, const ProgressFn& progress)
+      : ctx_(ctx),
+        opt_(opt),
+        progress_(progress),
+        start_(Clock::now()),
+        caller_(std::this_thread::get_id()),
+        walkers_(std::max(1, opt.portfolio)) {
+    const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = std::min(size(), opt.threads > 0 ? opt.threads : hw);
+  }
 
-SearchResult search_unfold(const UnfoldContext& ctx, std::vector<char> initial_fold, const SearchOptions& opt,
-                           const ProgressFn& progress) {
+  int size() const { return static_cast<int>(walkers_.size()); }
+
+  /// Walk 0 first runs alone for one full round, on the calling thread: most meshes of up to ~1,000
+  /// faces are solved within it, before any other walk is built or any thread started. Walker k uses
+  /// seed + k; the others are built in parallel (the initial overlap test is a full pass over the mesh).
+  void start(const EdgeStates& initial) {
+    walkers_[0] = std::make_unique<Walker>(ctx_, initial, opt_, opt_.seed);
+    walkers_[0]->run(opt_.round_steps, [this] { return should_stop(); });
+    if (walkers_[0]->solved()) return;
+    run_parallel(size(), threads_, [&](int k) {
+      if (k > 0) walkers_[k] = std::make_unique<Walker>(ctx_, initial, opt_, opt_.seed + k);
+    });
+  }
+
+  /// Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
+  /// wins, so the result depends on the seed only (unless the time limit or a cancel stops it). Returns
+  /// the winner, or -1 when stopped first.
+  int run_rounds() {
+    int round_steps = std::max(kMinRoundSteps, opt_.round_steps / kFirstRoundDivisor);
+    while (true) {
+      for (int k = 0; k < size(); ++k)
+        if (walkers_[k]->solved()) return k;
+      if (timed_out_.load() || stop_.load()) return -1;
+      if (elapsed() >= opt_.time_limit_s) return -1;
+      report();
+      if (stop_.load()) return -1;
+      const int budget = round_steps;
+      round_steps = std::min(opt_.round_steps, round_steps * 2);
+      run_parallel(size(), threads_,
+                   [&](int k) { walkers_[k]->run(budget, [this] { return should_stop(); }); });
+    }
+  }
+
+  /// The winner's tree, or (winner -1) the best tree (fewest overlapping pairs, lowest walker on ties)
+  /// cut apart where it still overlaps, so the result is always valid.
+  SearchResult result(int winner) const {
+    SearchResult res;
+    for (const auto& w : walkers_) {
+      if (!w) continue;
+      res.steps += w->steps();
+      res.moves += w->moves();
+      res.restarts += w->restarts();
+    }
+    if (winner >= 0) {
+      const CutTree& tree = walkers_[winner]->tree();
+      res.edges = tree.states();
+      res.solved = true;
+      res.best_tree = tree.states();
+      return res;
+    }
+    int pick = 0;
+    for (int k = 1; k < size(); ++k)
+      if (walkers_[k]->best() < walkers_[pick]->best()) pick = k;
+    res.overlaps_left = walkers_[pick]->best();
+    res.best_tree = walkers_[pick]->best_tree();
+    res.edges = res.best_tree;
+    cut_until_no_overlap(*ctx_.mesh, res.edges, ctx_.weight, opt_.constraints);
+    return res;
+  }
+
+ private:
   using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  const Mesh& m = *ctx.mesh;
-  const int walkers_n = std::max(1, opt.portfolio);
-  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = std::min(walkers_n, opt.threads > 0 ? opt.threads : hw);
 
-  // Walker k uses seed + k. Built in parallel: the initial overlap test is a full pass over the mesh.
-  std::vector<std::unique_ptr<Walker>> walkers(walkers_n);
-  std::atomic<bool> stop{
-      false};  // set when `progress` answers false: every walk stops at its next checkpoint
-  std::atomic<bool> timed_out{false};
-  // `progress`, asked on the calling thread only, at most every kReportInterval_s: at the checkpoints of
-  // the walks it runs (inside a round) and between rounds. The first report comes before any step.
-  const std::thread::id caller = std::this_thread::get_id();
-  double next_report_s = 0;
-  auto report = [&] {
-    if (!progress || stop.load(std::memory_order_relaxed)) return;
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  // Asked by every walk at its checkpoints: true once cancelled or out of time. On the calling thread it
+  // reports progress first, so reports come from inside rounds too.
+  bool should_stop() {
+    if (std::this_thread::get_id() == caller_) report();
+    if (stop_.load(std::memory_order_relaxed)) return true;
+    if (elapsed() >= opt_.time_limit_s) {
+      timed_out_.store(true, std::memory_order_relaxed);
+      return true;
+    }
+    return false;
+  }
+
+  // `progress`, asked on the calling thread only, at most every kReportInterval_s. The first report
+  // comes before any step. Its answer false sets stop_: every walk stops at its next checkpoint.
+  void report() {
+    if (!progress_ || stop_.load(std::memory_order_relaxed)) return;
     const double t = elapsed();
-    if (t < next_report_s) return;
-    next_report_s = t + kReportInterval_s;
-    int best = walkers[0]->shown_best(), steps = 0;
-    for (const auto& w : walkers) {
+    if (t < next_report_s_) return;
+    next_report_s_ = t + kReportInterval_s;
+    int best = walkers_[0]->shown_best(), steps = 0;
+    for (const auto& w : walkers_) {
       if (!w) continue;
       best = std::min(best, w->shown_best());
       steps += w->shown_steps();
     }
-    if (!progress({opt.stage, steps, walkers[0]->shown_pieces(), static_cast<double>(best), t}))
-      stop.store(true, std::memory_order_relaxed);
-  };
-  auto out_of_time = [&] {
-    if (std::this_thread::get_id() == caller) report();
-    if (stop.load(std::memory_order_relaxed)) return true;
-    if (elapsed() >= opt.time_limit_s) {
-      timed_out.store(true, std::memory_order_relaxed);
-      return true;
-    }
-    return false;
-  };
-  // Runs job(k) for every walker k on `threads` threads (the calling one included).
-  auto for_each_walker = [&](const auto& job) { run_parallel(walkers_n, threads, job); };
-  // Walk 0 first runs alone for one full round, on the calling thread: most meshes of up to ~1,000
-  // faces are solved within it, before any other walk is built or any thread started.
-  walkers[0] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed);
-  walkers[0]->run(opt.round_steps, out_of_time);
-  if (!walkers[0]->solved())
-    for_each_walker([&](int k) {
-      if (k > 0) walkers[k] = std::make_unique<Walker>(ctx, initial_fold, opt, opt.seed + k);
-    });
-
-  // Rounds of a fixed number of steps per walker; after each round the lowest-numbered solved walker
-  // wins, so the result depends on the seed only (unless the time limit or a cancel stops it).
-  int winner = -1;
-  int round_steps = std::max(16, opt.round_steps / 8);
-  for (int round = 0;; ++round) {
-    for (int k = 0; k < walkers_n && winner < 0; ++k)
-      if (walkers[k]->solved()) winner = k;
-    if (winner >= 0 || timed_out.load() || stop.load()) break;
-    if (elapsed() >= opt.time_limit_s) break;
-    report();
-    if (stop.load()) break;
-    const int budget = round_steps;
-    round_steps = std::min(opt.round_steps, round_steps * 2);
-    for_each_walker([&](int k) { walkers[k]->run(budget, out_of_time); });
+    if (!progress_({opt_.stage, steps, walkers_[0]->shown_pieces(), static_cast<double>(best), t}))
+      stop_.store(true, std::memory_order_relaxed);
   }
 
-  SearchResult res;
-  for (const auto& w : walkers) {
-    if (!w) continue;
-    res.steps += w->steps();
-    res.moves += w->moves();
-    res.restarts += w->restarts();
-  }
-  if (winner >= 0) {
-    const CutTree& tree = walkers[winner]->tree();
-    res.cut = tree.cut_flags();
-    res.solved = true;
-    res.best_fold = tree.fold_flags();
-    return res;
-  }
-  // Out of time: the best tree (fewest overlapping pairs, lowest walker on ties), cut apart where it
-  // still overlaps, so the result is always valid.
-  int pick = 0;
-  for (int k = 1; k < walkers_n; ++k)
-    if (walkers[k]->best() < walkers[pick]->best()) pick = k;
-  res.overlaps_left = walkers[pick]->best();
-  res.best_fold = walkers[pick]->best_fold();
-  res.cut = folds_from_cuts(res.best_fold);
-  cut_until_no_overlap(m, res.cut, ctx.weight, opt.constraints);
-  return res;
+  const UnfoldContext& ctx_;
+  const SearchOptions& opt_;
+  const ProgressFn& progress_;
+  const Clock::time_point start_;
+  const std::thread::id caller_;
+  std::vector<std::unique_ptr<Walker>> walkers_;
+  int threads_ = 1;
+  std::atomic<bool> stop_{false}, timed_out_{false};
+  double next_report_s_ = 0;
+};
+
+}  // namespace
+
+SearchResult search_unfold(const UnfoldContext& ctx, const EdgeStates& initial, const SearchOptions& opt,
+                           const ProgressFn& progress) {
+  Portfolio portfolio(ctx, opt, progress);
+  portfolio.start(initial);
+  return portfolio.result(portfolio.run_rounds());
 }
 
 }  // namespace foldkit::unfold

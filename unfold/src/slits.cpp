@@ -10,49 +10,31 @@
 #include <limits>
 #include <optional>
 
+#include "foldkit/geom/rigid.hpp"
+
 namespace foldkit::unfold {
 namespace {
 
 // Moves must lower the total slit cost by at least this: no walking in circles on rounding.
 constexpr double kMinGain = 1e-3;
 
-// A rigid motion of the plane (rotation by (c, s) about `from`, then translation to `to`).
-struct Motion {
-  double c = 1, s = 0;
-  Vec2 from, to;
-  Vec2 operator()(Vec2 p) const {
-    const Vec2 d = p - from;
-    return {to.x + c * d.x - s * d.y, to.y + s * d.x + c * d.y};
-  }
-};
-
 Vec2 corner_of(const CutTree& tree, int f, int v) {
   const auto& face = tree.mesh().faces[f];
-  const Triangle2& t = tree.flat(f);
+  const Triangle2& t = tree.flat(FaceId(f));
   for (int i = 0; i < 3; ++i)
     if (face[i] == v) return t[i];
   return t[0];
 }
 
 // The motion that takes face `moving`'s copy of edge e onto face `fixed`'s (as CutTree glues them).
-Motion glue_motion(const CutTree& tree, int e, int moving, int fixed) {
+RigidMotion glue_motion(const CutTree& tree, int e, int moving, int fixed) {
   const auto& v = tree.mesh().edges[e].v;
-  const Vec2 p0 = corner_of(tree, moving, v[0]), p1 = corner_of(tree, moving, v[1]);
-  const Vec2 q0 = corner_of(tree, fixed, v[0]), q1 = corner_of(tree, fixed, v[1]);
-  const Vec2 dp = p1 - p0, dq = q1 - q0;
-  Motion m;
-  const double n = norm(dp) * norm(dq);
-  if (n > 0) {
-    m.c = dot(dp, dq) / n;
-    m.s = cross(dp, dq) / n;
-  }
-  m.from = (p0 + p1) * 0.5;
-  m.to = (q0 + q1) * 0.5;
-  return m;
+  return motion_onto(corner_of(tree, moving, v[0]), corner_of(tree, moving, v[1]),
+                     corner_of(tree, fixed, v[0]), corner_of(tree, fixed, v[1]));
 }
 
 // Gap per length of cut edge e between face `moved` (placed by `motion`) and face `other`.
-double gap_per_length(const CutTree& tree, int e, int moved, const Motion& motion, int other) {
+double gap_per_length(const CutTree& tree, int e, int moved, const RigidMotion& motion, int other) {
   const auto& v = tree.mesh().edges[e].v;
   const Vec2 a0 = motion(corner_of(tree, moved, v[0])), a1 = motion(corner_of(tree, moved, v[1]));
   const Vec2 b0 = corner_of(tree, other, v[0]), b1 = corner_of(tree, other, v[1]);
@@ -69,7 +51,7 @@ double slit_cost(double gap, double limit) {
 
 struct Move {
   double gain = 0;  // cost removed (positive is better)
-  int cut = -1, fold = -1;
+  EdgeId cut, fold;
 };
 
 class Closer {
@@ -82,7 +64,7 @@ class Closer {
         edges_at_[v].push_back(e);
   }
 
-  double cost(int e) const { return slit_cost(seam_gap_per_length(tree_, e), limit_); }
+  double cost(int e) const { return slit_cost(seam_gap_per_length(tree_, EdgeId(e)), limit_); }
 
   // The best move that makes slit c cheaper: over the fold edges at its ends, the largest gain that
   // adds no overlap. Nothing when out of time.
@@ -91,7 +73,7 @@ class Closer {
     Move best;
     for (int v : m_.edges[c].v)
       for (int e : edges_at_[v]) {
-        if (!tree_.folded(e) || cons_.fold(e)) continue;
+        if (!tree_.folded(EdgeId(e)) || cons_.fold(EdgeId(e))) continue;
         if (!try_cut(e, best, out_of_time)) return {};
       }
     return best;
@@ -107,30 +89,31 @@ class Closer {
   // Improves `best` with the best of them; false when out of time.
   template <class OutOfTime>
   bool try_cut(int e, Move& best, const OutOfTime& out_of_time) {
-    tree_.smaller_side(e, side_);
+    tree_.smaller_side(EdgeId(e), side_);
     boundary_.clear();
     for (int x : side_)
       for (int a : m_.face_edges[x]) {
-        if (a == e || tree_.folded(a) || m_.edges[a].boundary()) continue;
-        const int y = tree_.across(a, x);
-        if (!tree_.in_side(y) && tree_.piece(y) == tree_.piece(x)) boundary_.push_back({a, x, y});
+        if (a == e || tree_.folded(EdgeId(a)) || m_.edges[a].boundary()) continue;
+        const FaceId y = tree_.across(EdgeId(a), FaceId(x));
+        if (!tree_.in_side(y) && tree_.piece(y) == tree_.piece(FaceId(x)))
+          boundary_.push_back({a, x, y.index()});
       }
     double before = 0;
     for (const Link& l : boundary_)
       before += cost(l.edge);
     candidates_.clear();
     for (const Link& l : boundary_) {
-      if (cons_.cut(l.edge) || !curvature_allows(e, l.edge)) continue;
-      const Motion motion = glue_motion(tree_, l.edge, l.inside, l.outside);
+      if (cons_.cut(EdgeId(l.edge)) || !curvature_allows(e, l.edge)) continue;
+      const RigidMotion motion = glue_motion(tree_, l.edge, l.inside, l.outside);
       // After the move: e is a seam, l.edge is folded, the other links moved with the side.
       const auto& ef = m_.edges[e].face;
-      const int e_in = tree_.in_side(ef[0]) ? ef[0] : ef[1], e_out = e_in == ef[0] ? ef[1] : ef[0];
+      const int e_in = tree_.in_side(FaceId(ef[0])) ? ef[0] : ef[1], e_out = e_in == ef[0] ? ef[1] : ef[0];
       double after = slit_cost(gap_per_length(tree_, e, e_in, motion, e_out), limit_);
       for (const Link& o : boundary_)
         if (o.edge != l.edge)
           after += slit_cost(gap_per_length(tree_, o.edge, o.inside, motion, o.outside), limit_);
       const double gain = before - after;
-      if (gain > best.gain + kMinGain) candidates_.push_back({gain, e, l.edge});
+      if (gain > best.gain + kMinGain) candidates_.push_back({gain, EdgeId(e), EdgeId(l.edge)});
     }
     std::stable_sort(candidates_.begin(), candidates_.end(),
                      [](const Move& p, const Move& q) { return p.gain > q.gain; });
@@ -148,7 +131,7 @@ class Closer {
   bool curvature_allows(int e, int a) const {
     for (int v : m_.edges[a].v) {
       const auto& ev = m_.edges[e].v;
-      const int after = tree_.cut_count(v) - 1 + (v == ev[0] || v == ev[1]);
+      const int after = tree_.cut_count(VertexId(v)) - 1 + (v == ev[0] || v == ev[1]);
       if (after < tree_.context().required_cuts[v]) return false;
     }
     return true;
@@ -169,16 +152,16 @@ class Closer {
 
 }  // namespace
 
-double seam_gap_per_length(const CutTree& tree, int e) {
-  const auto& edge = tree.mesh().edges[e];
-  if (edge.boundary() || tree.folded(e) || tree.piece(edge.face[0]) != tree.piece(edge.face[1]))
+double seam_gap_per_length(const CutTree& tree, EdgeId e) {
+  const auto& edge = tree.mesh().edge(e);
+  if (edge.boundary() || tree.folded(e) || tree.piece(edge.face_id(0)) != tree.piece(edge.face_id(1)))
     return std::numeric_limits<double>::infinity();
-  return gap_per_length(tree, e, edge.face[0], Motion{}, edge.face[1]);
+  return gap_per_length(tree, e.index(), edge.face[0], RigidMotion{}, edge.face[1]);
 }
 
 int count_slits(const CutTree& tree, double min_gap_per_length) {
   int n = 0;
-  for (int e = 0; e < tree.mesh().num_edges(); ++e)
+  for (EdgeId e : all_ids<EdgeId>(tree.mesh().num_edges()))
     n += seam_gap_per_length(tree, e) < min_gap_per_length;
   return n;
 }
@@ -200,7 +183,7 @@ SlitResult close_slits(CutTree& tree, const EdgeConstraints& constraints, const 
       if (options.progress)
         options.progress(static_cast<long>(pass) * edges + c, static_cast<long>(options.max_passes) * edges);
       const Move move = closer.best_move(c, out_of_time);
-      if (move.cut < 0) continue;
+      if (!move.cut.valid()) continue;
       closer.apply(move);
       ++result.moves;
       ++moves_this_pass;

@@ -17,12 +17,12 @@ namespace foldkit::unfold {
 namespace {
 
 // The cuts `cut` with their slits closed where a move allows (slits.hpp).
-std::vector<char> without_slits(const UnfoldContext& ctx, const std::vector<char>& cut,
-                                const EdgeConstraints& constraints, const UnfoldOptions& options,
-                                double seconds_left, const ProgressFn& progress, double seconds_before) {
-  if (!options.close_slits) return cut;
-  CutTree tree(ctx, folds_from_cuts(cut));
-  if (tree.overlap_count() > 0) return cut;
+EdgeStates without_slits(const UnfoldContext& ctx, const EdgeStates& edges,
+                         const EdgeConstraints& constraints, const UnfoldOptions& options,
+                         double seconds_left, const ProgressFn& progress, double seconds_before) {
+  if (!options.close_slits) return edges;
+  CutTree tree(ctx, edges);
+  if (tree.overlap_count() > 0) return edges;
   SlitOptions so = options.slits;
   so.time_limit_s = std::clamp(seconds_left, 0.0, so.time_limit_s);
   if (progress) {
@@ -35,7 +35,7 @@ std::vector<char> without_slits(const UnfoldContext& ctx, const std::vector<char
     };
   }
   const SlitResult r = close_slits(tree, constraints, so);
-  return r.moves > 0 ? tree.cut_flags() : cut;
+  return r.moves > 0 ? tree.states() : edges;
 }
 
 }  // namespace
@@ -46,10 +46,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   if (mesh.num_faces() > options.face_limit)
-    throw InputError(mesh.name, std::to_string(mesh.num_faces()) + " faces, more than the " +
-                                    std::to_string(options.face_limit) +
-                                    " foldkit unfolds (no paper model has that many): decimate first, e.g. "
-                                    "--max-faces 5000");
+    throw TooManyFaces(mesh.name, mesh.num_faces(), options.face_limit);
   EdgeConstraints constraints = resolve_seams(mesh, options.seams);
   const FlatFaces flat = find_flat_faces(mesh, options.flat_angle_rad);
   keep_flat_faces(mesh, flat, constraints);
@@ -62,15 +59,14 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       break;
     case Method::Search: {
       const UnfoldContext ctx = make_context(mesh);
-      SearchOptions so;
+      SearchOptions so = options.search;
       so.seed = options.seed;
       so.threads = options.threads;
       so.time_limit_s = options.time_limit_s;
       so.constraints = constraints;
-      const SearchResult r = search_unfold(
-          ctx, folds_from_cuts(spanning_forest_cuts(mesh, ctx.weight, constraints)), so, progress);
+      const SearchResult r = search_unfold(ctx, spanning_forest(mesh, ctx.weight, constraints), so, progress);
       if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
-      result.unfolding = flatten(mesh, without_slits(ctx, r.cut, constraints, options,
+      result.unfolding = flatten(mesh, without_slits(ctx, r.edges, constraints, options,
                                                      options.time_limit_s - elapsed(), progress, elapsed()));
       result.method = "search";
       result.iterations = r.steps;
@@ -81,16 +77,14 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
     }
     case Method::Ga: {
       const UnfoldContext ctx = make_context(mesh);
-      GaOptions go;
+      GaOptions go = options.ga;
       go.seed = options.seed;
       go.time_limit_s = options.time_limit_s;
       go.threads = options.threads;
-      go.population = options.population;
-      go.weights = {options.lambda_p, options.lambda_l, options.lambda_m, options.lambda_b};
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
       if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
-      result.unfolding = flatten(mesh, without_slits(ctx, r.cut, constraints, options,
+      result.unfolding = flatten(mesh, without_slits(ctx, r.edges, constraints, options,
                                                      options.time_limit_s - elapsed(), progress, elapsed()));
       result.method = r.method;
       result.iterations = r.generations;

@@ -29,12 +29,19 @@ std::vector<std::vector<int>> Unfolding::piece_faces() const {
   return pieces;
 }
 
+EdgeStates edge_states(const Unfolding& unfolding) {
+  EdgeStates state(static_cast<int>(unfolding.edges.size()), EdgeState::Fold);
+  for (EdgeId e : all_ids<EdgeId>(state.size()))
+    if (unfolding.edges[e.index()].cut) state[e] = EdgeState::Cut;
+  return state;
+}
+
 int Unfolding::seam_count() const {
   return static_cast<int>(
       std::count_if(edges.begin(), edges.end(), [](const UnfoldEdge& e) { return e.glued_seam(); }));
 }
 
-Unfolding flatten(const Mesh& mesh, const std::vector<char>& cut) {
+Unfolding flatten(const Mesh& mesh, const EdgeStates& state) {
   const int nf = mesh.num_faces();
   Unfolding u;
   u.flat.assign(nf, Triangle2{});
@@ -46,7 +53,7 @@ Unfolding flatten(const Mesh& mesh, const std::vector<char>& cut) {
     UnfoldEdge& ue = u.edges[e];
     ue.face = me.face;
     ue.corner = me.corner;
-    ue.cut = me.boundary() || (e < static_cast<int>(cut.size()) && cut[e]);
+    ue.cut = me.boundary() || (e < state.size() && state[EdgeId(e)] == EdgeState::Cut);
     ue.fold_angle = fold_angle(mesh, e);
     ue.length = edge_length(mesh, e);
   }

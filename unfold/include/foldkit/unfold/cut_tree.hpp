@@ -1,6 +1,6 @@
 #pragma once
-// The working state shared by the search, the GA and the rearrangement: one fold/cut flag per mesh
-// edge (the folds form a spanning forest of the dual graph), every face laid flat in its piece, the
+// The working state shared by the search, the GA and the rearrangement: one EdgeState per mesh edge
+// (the folds form a spanning forest of the dual graph), every face laid flat in its piece, the
 // overlapping pairs of faces within each piece, and the number of cut edges at every vertex.
 // Every operation (cut an edge, stitch two pieces, move a subtree to another edge) updates all of
 // it incrementally: only the faces that move are re-placed and re-tested against an OverlapIndex.
@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "foldkit/geom/predicates.hpp"
+#include "foldkit/geom/rigid.hpp"
+#include "foldkit/unfold/edge_state.hpp"
+#include "foldkit/unfold/ids.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/overlap_index.hpp"
 
@@ -32,28 +35,24 @@ struct UnfoldContext {
 /// Builds the shared context of `mesh` (which must outlive it).
 UnfoldContext make_context(const Mesh& mesh);
 
-/// Fold flags (1 = fold) from cut flags (1 = cut), the form CutTree takes.
-std::vector<char> folds_from_cuts(const std::vector<char>& cut);
-
 /// The incremental unfolding state. A value type: copying it gives an independent state.
 class CutTree {
  public:
-  /// Lays out the forest given by `fold` (one flag per edge; boundary edges are never folded; an
-  /// edge that would close a cycle is cut) and finds every overlapping pair.
-  CutTree(const UnfoldContext& context, std::vector<char> fold);
+  /// Lays out the forest given by `state` (one per edge; boundary edges are always cut; an edge that
+  /// would close a cycle is cut) and finds every overlapping pair.
+  CutTree(const UnfoldContext& context, EdgeStates state);
 
   const UnfoldContext& context() const { return *ctx_; }
   const Mesh& mesh() const { return *ctx_->mesh; }
   int num_faces() const { return static_cast<int>(piece_.size()); }
-  bool folded(int e) const { return fold_[e] != 0; }
-  /// Cut flags (1 = cut) per edge, the form flatten() takes.
-  std::vector<char> cut_flags() const;
-  const std::vector<char>& fold_flags() const { return fold_; }
-  int piece(int f) const { return piece_[f]; }
+  bool folded(EdgeId e) const { return state_[e] == EdgeState::Fold; }
+  /// The state of every edge, the form flatten() and the constructor take.
+  const EdgeStates& states() const { return state_; }
+  int piece(FaceId f) const { return piece_[f.index()]; }
   int piece_size(int p) const { return piece_size_[p]; }
   int piece_count() const { return piece_count_; }
-  const Triangle2& flat(int f) const { return index_.triangle(f); }
-  int cut_count(int v) const { return cut_count_[v]; }
+  const Triangle2& flat(FaceId f) const { return index_.triangle(f.index()); }
+  int cut_count(VertexId v) const { return cut_count_[v.index()]; }
 
   /// Number of overlapping pairs of faces (same piece, interiors overlap).
   int overlap_count() const { return overlap_pairs_; }
@@ -62,54 +61,55 @@ class CutTree {
   const std::vector<int>& overlap_partners(int f) const { return partners_[f]; }
 
   /// The other face across edge e of face f (-1 across a boundary).
-  int across(int e, int f) const;
+  FaceId across(EdgeId e, FaceId f) const;
   /// True when folding edge e keeps both its vertices at or above their required cut count.
-  bool curvature_allows_fold(int e) const;
+  bool curvature_allows_fold(EdgeId e) const;
 
   /// Tree edges on the fold path between faces f and g of the same piece.
-  std::vector<int> path(int f, int g);
+  std::vector<EdgeId> path(FaceId f, FaceId g);
 
   /// Cuts fold edge e: the smaller side becomes a new piece and loses its overlaps with the other side.
-  void cut(int e);
+  void cut(EdgeId e);
   /// Number of overlapping pairs stitching cut edge e (between two pieces) would add, counting no
   /// further than `limit` + 1. The state is unchanged.
-  int stitch_cost(int e, int limit);
+  int stitch_cost(EdgeId e, int limit);
   /// Folds cut edge e between two pieces: the smaller piece moves rigidly onto the other.
-  void stitch(int e);
+  void stitch(EdgeId e);
 
   /// Faces on the smaller side of fold edge e (e is treated as cut), written to `side`; afterwards
   /// in_side(f) tells membership until the next call.
-  void smaller_side(int e, std::vector<int>& side);
-  bool in_side(int f) const { return side_mark_[f] == side_stamp_; }
+  void smaller_side(EdgeId e, std::vector<int>& side);
+  bool in_side(FaceId f) const { return side_mark_[f.index()] == side_stamp_; }
   /// Overlapping pairs between `side` (from smaller_side) and the rest of its piece.
   int cross_overlaps(const std::vector<int>& side) const;
   /// Overlapping pairs between `side`, moved rigidly so that its copy of cut edge `attach` meets the
   /// rest's copy, and the rest of its piece; counting stops past `limit`.
-  int reattach_cost(const std::vector<int>& side, int attach, int limit);
+  int reattach_cost(const std::vector<int>& side, EdgeId attach, int limit);
   /// Cuts `cut_edge` and folds `attach`, moving `side` (from smaller_side(cut_edge)).
-  void reattach(const std::vector<int>& side, int cut_edge, int attach);
+  void reattach(const std::vector<int>& side, EdgeId cut_edge, EdgeId attach);
 
  private:
-  struct Rigid {
-    double c = 1, s = 0;
-    Vec2 from, to;
-    Vec2 operator()(Vec2 p) const {
-      Vec2 d = p - from;
-      return {to.x + c * d.x - s * d.y, to.y + s * d.x + c * d.y};
-    }
-  };
   /// The motion taking the copy of edge e in face `moving` onto its copy in face `fixed`.
-  Rigid glue_motion(int e, int moving, int fixed) const;
+  // Construction steps: every piece laid flat breadth-first from its lowest face (returns the triangles),
+  // the cut edges at every vertex, every triangle into the overlap index with its overlapping pairs.
+  std::vector<Triangle2> lay_out_pieces();
+  void place_fold_neighbours(int f, int piece, std::vector<Triangle2>& tri, std::vector<int>& queue);
+  void count_cuts();
+  void index_all(const std::vector<Triangle2>& tri);
+  RigidMotion glue_motion(EdgeId e, int moving, int fixed) const;
+  bool folded(int e) const { return state_[EdgeId(e)] == EdgeState::Fold; }
+  int across(int e, int f) const { return across(EdgeId(e), FaceId(f)).index(); }
+  bool in_side(int f) const { return side_mark_[f] == side_stamp_; }
   Vec2 corner_position(int f, int v) const;
   void add_pair(int f, int g);
   void remove_pair(int f, int g);
   void collect_piece(int f, std::vector<int>& faces);
   int new_piece_id();
   void rebuild_parents();
-  void move_faces(const std::vector<int>& faces, const Rigid& m, int new_piece);
+  void move_faces(const std::vector<int>& faces, const RigidMotion& m, int new_piece);
 
   const UnfoldContext* ctx_;
-  std::vector<char> fold_;
+  EdgeStates state_;
   std::vector<int> cut_count_;
   std::vector<int> piece_;
   std::vector<int> piece_size_;

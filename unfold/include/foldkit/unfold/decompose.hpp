@@ -7,10 +7,10 @@
 
 namespace foldkit::unfold {
 
-/// Fold flags of the spanning subtrees (Kruskal over the minimum-perimeter weights, forced folds
-/// first) that leave about `disconnected_share` (e.g. 0.65) of the interior edges cut.
-std::vector<char> initial_patch_folds(const UnfoldContext& context, double disconnected_share,
-                                      const EdgeConstraints& constraints);
+/// The spanning subtrees (Kruskal over the minimum-perimeter weights, forced folds first) that leave
+/// about `disconnected_share` (e.g. 0.65) of the interior edges cut.
+EdgeStates initial_patches(const UnfoldContext& context, double disconnected_share,
+                           const EdgeConstraints& constraints);
 
 /// Cuts edges of `tree` until no piece overlaps itself: for an overlapping pair, the heaviest
 /// (shortest) fold edge on the path between them that is not a forced fold. Deterministic.

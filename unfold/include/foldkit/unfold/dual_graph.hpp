@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "foldkit/unfold/edge_state.hpp"
 #include "foldkit/unfold/mesh.hpp"
 
 namespace foldkit::unfold {
@@ -13,22 +14,25 @@ namespace foldkit::unfold {
 /// Boundary edges get weight 1. All 0 when every edge has the same length.
 std::vector<double> min_perimeter_weights(const Mesh& mesh);
 
-/// Per-edge flags for edges the user forces to be cut or to stay folded.
+/// What an edge must be, whatever an unfolder prefers: the user's --cut and --keep lists and the edges
+/// inside flat faces (always folded).
+enum class EdgeRule : unsigned char { Free, MustCut, MustFold };
+
+/// One EdgeRule per mesh edge (or none at all: every edge free).
 struct EdgeConstraints {
-  std::vector<char> force_cut;   ///< empty or one flag per mesh edge
-  std::vector<char> force_fold;  ///< empty or one flag per mesh edge
-  bool cut(int e) const { return e < static_cast<int>(force_cut.size()) && force_cut[e]; }
-  bool fold(int e) const { return e < static_cast<int>(force_fold.size()) && force_fold[e]; }
+  EdgeMap<EdgeRule> rule;  ///< empty or one per mesh edge
+  bool cut(EdgeId e) const { return e.index() < rule.size() && rule[e] == EdgeRule::MustCut; }
+  bool fold(EdgeId e) const { return e.index() < rule.size() && rule[e] == EdgeRule::MustFold; }
 };
 
 /// Kruskal over the dual edges in increasing weight (ties by edge index, so the result is
 /// deterministic): forced folds first, then every interior edge whose weight is below `threshold` and
-/// that joins two different trees. Returns one cut flag per mesh edge (1 = cut); boundary edges are
-/// always cut. With the default threshold this is the minimum spanning forest (one tree per connected
-/// component); a lower threshold leaves spanning subtrees (the seed's initial patches).
-std::vector<char> spanning_forest_cuts(const Mesh& mesh, const std::vector<double>& weight,
-                                       const EdgeConstraints& constraints = {},
-                                       double threshold = std::numeric_limits<double>::infinity());
+/// that joins two different trees; every other edge is cut (boundary edges always). With the default
+/// threshold this is the minimum spanning forest (one tree per connected component); a lower threshold
+/// leaves spanning subtrees (the seed's initial patches).
+EdgeStates spanning_forest(const Mesh& mesh, const std::vector<double>& weight,
+                           const EdgeConstraints& constraints = {},
+                           double threshold = std::numeric_limits<double>::infinity());
 
 /// Number of connected components of the mesh (faces joined across interior edges).
 int count_components(const Mesh& mesh);

@@ -6,7 +6,7 @@ namespace foldkit::unfold {
 
 struct FitnessTerms {
   int pieces = 0;  ///< Np
-  double rl = 0;   ///< faces outside the largest piece / all faces
+  double rl = 0;   ///< R_l: faces outside the largest piece / all faces
   double rm = 0;   ///< margin left around the pieces after a shelf packing of their bounding boxes, in [0, 1]
   double rb = 0;  ///< mean outline distance between the two sides of a glued seam / outline length, in [0, 1]
 };

@@ -13,7 +13,8 @@ namespace foldkit::unfold {
 
 /// Half a degree: below what a folded paper model shows, above the rounding of coordinates printed with
 /// six significant digits.
-constexpr double kDefaultFlatAngleRad = 0.5 * std::numbers::pi / 180.0;
+constexpr double kDefaultFlatAngleDeg = 0.5;
+constexpr double kDefaultFlatAngleRad = kDefaultFlatAngleDeg * std::numbers::pi / 180.0;
 
 /// The partition of a mesh's triangles into flat faces.
 struct FlatFaces {

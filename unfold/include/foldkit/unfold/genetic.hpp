@@ -10,7 +10,7 @@
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/fitness.hpp"
-#include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/progress.hpp"
 
 namespace foldkit::unfold {
 
@@ -32,7 +32,7 @@ struct GaOptions {
 };
 
 struct GaResult {
-  std::vector<char> cut;  ///< cut flags of an overlap-free unfolding
+  EdgeStates edges;  ///< the edges of an overlap-free unfolding
   int pieces = 0;
   double score = 0;     ///< fitness of the returned unfolding
   double share = 0;     ///< share of the run that won

@@ -7,6 +7,7 @@
 
 #include "foldkit/geom/colour.hpp"
 #include "foldkit/geom/vec.hpp"
+#include "foldkit/unfold/ids.hpp"
 
 namespace foldkit::unfold {
 
@@ -18,6 +19,9 @@ struct MeshEdge {
   /// corner[k]: index i in 0..2 such that the edge is faces[face[k]][i] -> faces[face[k]][(i+1)%3].
   std::array<int, 2> corner{-1, -1};
   bool boundary() const { return face[1] < 0; }
+  /// face[k] and v[k] as typed ids.
+  FaceId face_id(int k) const { return FaceId(face[k]); }
+  VertexId vertex_id(int k) const { return VertexId(v[k]); }
 };
 
 /// What faces are printed with: a flat colour, times a texture image when there is one.
@@ -56,6 +60,12 @@ struct Mesh {
   int num_faces() const { return static_cast<int>(faces.size()); }
   int num_vertices() const { return static_cast<int>(vertices.size()); }
   int num_edges() const { return static_cast<int>(edges.size()); }
+  /// Typed access (the plain vectors above stay for the readers and for layout).
+  const MeshEdge& edge(EdgeId e) const { return edges[e.index()]; }
+  std::array<EdgeId, 3> edges_of(FaceId f) const {
+    const auto& fe = face_edges[f.index()];
+    return {EdgeId(fe[0]), EdgeId(fe[1]), EdgeId(fe[2])};
+  }
   /// The input file's face that triangle f came from (f itself when face_polygon is empty).
   int polygon_of(int f) const { return face_polygon.empty() ? f : face_polygon[f]; }
   /// Corner positions of face f.

@@ -10,24 +10,24 @@
 
 namespace foldkit::unfold {
 
-/// Cuts fold edges of `cut` until no piece of flatten(mesh, cut) overlaps itself: for each overlapping
+/// Cuts fold edges of `state` until no piece of flatten(mesh, state) overlaps itself: for each overlapping
 /// pair, one edge on the fold path between the two faces is cut (the one of largest weight in the
-/// middle half of the path, never a forced fold). Updates `cut` and returns the final unfolding.
+/// middle half of the path, never a forced fold). Updates `state` and returns the final unfolding.
 /// Throws Error (ExitCode::Usage) when forced folds alone make a piece overlap.
-Unfolding cut_until_no_overlap(const Mesh& mesh, std::vector<char>& cut, const std::vector<double>& weight,
+Unfolding cut_until_no_overlap(const Mesh& mesh, EdgeStates& state, const std::vector<double>& weight,
                                const EdgeConstraints& constraints = {});
 
 /// [SP05]: minimum-perimeter spanning forest, then cut_until_no_overlap.
 Unfolding unfold_mst(const Mesh& mesh, const EdgeConstraints& constraints = {});
 
-/// Parent links of the fold forest of `cut` (breadth first from the lowest face of each tree, as
+/// Parent links of the fold forest of `state` (breadth first from the lowest face of each tree, as
 /// flatten walks it): parent_face[f] / parent_edge[f] are -1 at roots; depth[f] counts folds to the root.
 struct FoldForest {
   std::vector<int> parent_face, parent_edge, depth;
 };
-FoldForest fold_forest(const Mesh& mesh, const std::vector<char>& cut);
+FoldForest fold_forest(const Mesh& mesh, const EdgeStates& state);
 
 /// The fold edges on the forest path from face a to face b (empty if they are in different trees).
-std::vector<int> fold_path(const FoldForest& forest, int a, int b);
+std::vector<EdgeId> fold_path(const FoldForest& forest, int a, int b);
 
 }  // namespace foldkit::unfold

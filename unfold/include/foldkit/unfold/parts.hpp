@@ -5,7 +5,10 @@
 // faces are never separated. The input unfolding is left alone: the result is a new unfolding of the
 // same mesh whose cuts are the old cuts plus the new ones, so every part is a sub-tree of an old piece
 // and overlaps nothing.
+#include <string>
 #include <vector>
+
+#include "foldkit/error.hpp"
 
 #include "foldkit/geom/vec.hpp"
 #include "foldkit/unfold/mesh.hpp"
@@ -38,9 +41,33 @@ struct PartsResult {
   int new_pieces = 0;    ///< parts they were cut into
 };
 
+/// A flat face alone is larger than the room for a part: no split helps. Carries the numbers, so that the
+/// caller can word the size as its user sets it (the CLI: --size).
+class PartTooLarge : public LayoutError {
+ public:
+  PartTooLarge(int triangles, Vec2 room_mm, double asked_mm, double largest_mm)
+      : LayoutError(message(triangles, room_mm, asked_mm, largest_mm, "size")),
+        triangles_(triangles),
+        room_mm_(room_mm),
+        asked_mm_(asked_mm),
+        largest_mm_(largest_mm) {}
+  /// The message with the model size called `size_name`.
+  std::string message(const std::string& size_name) const {
+    return message(triangles_, room_mm_, asked_mm_, largest_mm_, size_name);
+  }
+  double largest_mm() const { return largest_mm_; }
+
+ private:
+  static std::string message(int triangles, Vec2 room_mm, double asked_mm, double largest_mm,
+                             const std::string& size_name);
+  int triangles_;
+  Vec2 room_mm_;
+  double asked_mm_, largest_mm_;
+};
+
 /// Cuts every piece that does not fit options.room_mm at options.mm_per_unit into parts that fit the
 /// room scaled by options.room_fraction, growing each part over the piece's folds, whole flat faces at
-/// a time, for as long as it fits, then merging neighbouring parts that fit together. Throws LayoutError
+/// a time, for as long as it fits, then merging neighbouring parts that fit together. Throws PartTooLarge
 /// when a flat face alone is larger than the room, naming the largest model size that fits.
 PartsResult split_into_parts(const Mesh& mesh, const Unfolding& unfolding, const PartOptions& options);
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/error.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
@@ -27,9 +28,42 @@ std::vector<FileEdge> read_edge_list(const std::filesystem::path& path, int inde
 std::vector<std::array<int, 2>> to_mesh_edges(const LoadedMesh& loaded, const std::vector<FileEdge>& edges,
                                               const std::string& list_file, int index_base);
 
-/// Turns vertex pairs into per-edge flags. Throws Error (ExitCode::Usage) naming the first pair that is
-/// not an edge of the mesh, an edge that is both cut and kept, or kept edges that close a loop of
-/// folds (which no flat piece can have).
+/// How messages name the two seam lists (the CLI names them by its options).
+struct SeamListNames {
+  std::string cut = "the cut list", keep = "the keep list";
+};
+
+/// An impossible seam (a usage error): the problem and the edge, worded with the lists' names.
+class SeamError : public Error {
+ public:
+  enum class Problem {
+    NotAnEdgeToCut,   ///< a pair of the cut list is not an edge of the mesh
+    NotAnEdgeToKeep,  ///< a pair of the keep list is not an edge of the mesh
+    CutAndKept,       ///< an edge in both lists
+    KeptOnBoundary,   ///< a kept edge on the mesh boundary (it has no second face to fold onto)
+    KeptLoop,         ///< a kept edge closing a loop of kept edges
+  };
+  SeamError(Problem problem, std::string edge, std::string mesh_name)
+      : Error(message(problem, edge, mesh_name, {}), ExitCode::Usage),
+        problem_(problem),
+        edge_(std::move(edge)),
+        mesh_name_(std::move(mesh_name)) {}
+  Problem problem() const { return problem_; }
+  /// The message with the lists called by `names`.
+  std::string message(const SeamListNames& names) const {
+    return message(problem_, edge_, mesh_name_, names);
+  }
+
+ private:
+  static std::string message(Problem problem, const std::string& edge, const std::string& mesh_name,
+                             const SeamListNames& names);
+  Problem problem_;
+  std::string edge_, mesh_name_;
+};
+
+/// Turns vertex pairs into per-edge rules. Throws SeamError naming the first pair that is not an edge
+/// of the mesh, an edge that is both cut and kept, or kept edges that close a loop of folds (which no
+/// flat piece can have).
 EdgeConstraints resolve_seams(const Mesh& mesh, const SeamConstraints& seams);
 
 }  // namespace foldkit::unfold

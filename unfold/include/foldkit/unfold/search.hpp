@@ -4,11 +4,12 @@
 // a tree edge on the path between two overlapping faces and re-attach the cut-off subtree through
 // another of its edges, keeping moves that do not raise the number of overlapping pairs.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
-#include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/progress.hpp"
 
 namespace foldkit::unfold {
 
@@ -47,25 +48,25 @@ struct SearchOptions {
 };
 
 struct SearchResult {
-  /// Cut flags (1 = cut) of an overlap-free unfolding: the search's tree when it reached zero
-  /// overlaps, else its best tree cut apart where it still overlapped (more pieces).
-  std::vector<char> cut;
+  /// The edges of an overlap-free unfolding: the search's tree when it reached zero overlaps, else its
+  /// best tree cut apart where it still overlapped (more pieces).
+  EdgeStates edges;
   bool solved = false;    ///< one piece per connected component, without overlaps
   int overlaps_left = 0;  ///< overlapping pairs of the best tree when not solved
   int moves = 0;          ///< accepted moves, summed over the walks
   int steps = 0;          ///< steps (each evaluates up to candidates_per_move moves), summed over the walks
   int restarts = 0;
-  /// Fold flags of the best spanning tree seen (fewest overlapping pairs).
-  std::vector<char> best_fold;
+  /// The best spanning tree seen (fewest overlapping pairs).
+  EdgeStates best_tree;
 };
 
-/// Runs the search from the fold forest `initial_fold` (pieces of one component are first stitched
+/// Runs the search from the fold forest `initial` (pieces of one component are first stitched
 /// into one tree along their lightest edges), as a portfolio of walks on up to `threads` threads.
 /// Deterministic for a given seed, whatever the thread count, unless stopped by the time limit or by
 /// `progress` returning false. `progress` is called from the calling thread only, at most every 0.2 s
 /// (the first time before any step), inside rounds as well as between them; once it returns false every
 /// walk stops within a few steps and is not asked again.
-SearchResult search_unfold(const UnfoldContext& context, std::vector<char> initial_fold,
+SearchResult search_unfold(const UnfoldContext& context, const EdgeStates& initial,
                            const SearchOptions& options, const ProgressFn& progress = {});
 
 /// Stitches every pair of pieces of `tree` joined by a cut edge, lightest edges first, whatever the

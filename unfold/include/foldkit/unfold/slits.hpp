@@ -35,7 +35,7 @@ struct SlitResult {
 
 /// How far apart the two sides of cut edge e lie, relative to its length: the larger of the distances
 /// between the two copies of each end. Infinite for a boundary edge, a fold or a seam between pieces.
-double seam_gap_per_length(const CutTree& tree, int e);
+double seam_gap_per_length(const CutTree& tree, EdgeId e);
 
 /// Number of slits of `tree` (seams whose gap per length is below `min_gap_per_length`).
 int count_slits(const CutTree& tree, double min_gap_per_length);

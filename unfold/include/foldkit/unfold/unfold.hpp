@@ -5,8 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/error.hpp"
 #include "foldkit/unfold/flat_faces.hpp"
+#include "foldkit/unfold/genetic.hpp"
 #include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/progress.hpp"
+#include "foldkit/unfold/search.hpp"
 #include "foldkit/unfold/slits.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
@@ -24,17 +28,17 @@ struct SeamConstraints {
   std::vector<std::array<int, 2>> forbid_cut;  ///< --keep FILE
 };
 
+/// The stage options nest: `search`, `ga` and `slits` are passed down whole. The run-wide `seed`,
+/// `time_limit_s` and `threads` (and the constraints resolved from `seams` and the flat faces) are the
+/// ones every stage gets: unfold_mesh sets them on the nested options, whatever those hold.
 struct UnfoldOptions {
   Method method = Method::Search;  ///< default: the repair search (bench: one piece where mst leaves many)
   std::uint64_t seed = 1;
   double time_limit_s = 60;  ///< wall-clock budget for GA/search
   int threads = 0;           ///< 0: as many as the hardware has
-  int population = 64;       ///< GA population size
   /// Meshes with more faces are refused: no paper model has that many, and the work outside the time
   /// limit (index building, the final cutting apart) grows with the face count. Decimate first.
   int face_limit = 100'000;
-  /// Fitness weights of §5.3: f = λp·Np + λl·Rl + λm·Rm + λb·Rb.
-  double lambda_p = 100, lambda_l = 100, lambda_m = 10, lambda_b = 1;
   SeamConstraints seams;
   /// Triangles of a planar input polygon, and coplanar neighbours, within this angle of one normal are one
   /// flat face that is never cut (see flat_faces.hpp).
@@ -43,17 +47,9 @@ struct UnfoldOptions {
   /// no glue tab fits.
   bool close_slits = true;
   SlitOptions slits;
+  SearchOptions search;  ///< `--method search` (portfolio, tabu tenure, ...)
+  GaOptions ga;          ///< `--method ga` (population, fitness weights, ...)
 };
-
-/// Progress report while unfolding; return false to cancel (the best result so far is returned).
-struct UnfoldProgress {
-  std::string stage;  ///< e.g. "ga 70%", "search"
-  int iteration = 0;  ///< generation or move count
-  int pieces = 0;     ///< best number of pieces so far
-  double best_score = 0;
-  double seconds = 0;
-};
-using ProgressFn = std::function<bool(const UnfoldProgress&)>;
 
 struct UnfoldResult {
   Unfolding unfolding;
@@ -63,7 +59,16 @@ struct UnfoldResult {
   std::vector<std::string> notes;
 };
 
+/// A mesh over UnfoldOptions::face_limit: decimate first (the CLI says how).
+class TooManyFaces : public InputError {
+ public:
+  TooManyFaces(const std::string& mesh_name, int faces, int limit)
+      : InputError(mesh_name, std::to_string(faces) + " faces, more than the " + std::to_string(limit) +
+                                  " foldkit unfolds (no paper model has that many): decimate first") {}
+};
+
 /// Unfolds every connected component of `mesh`; pieces of all components are numbered together.
+/// Throws TooManyFaces over the face limit, SeamError for impossible seams.
 UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const ProgressFn& progress = {});
 
 }  // namespace foldkit::unfold

@@ -7,6 +7,7 @@
 
 #include "foldkit/geom/predicates.hpp"
 #include "foldkit/geom/vec.hpp"
+#include "foldkit/unfold/edge_state.hpp"
 #include "foldkit/unfold/mesh.hpp"
 
 namespace foldkit::unfold {
@@ -16,11 +17,14 @@ struct UnfoldEdge {
   /// The (one or two) faces and corners of the mesh edge; face[1] == -1 on a mesh boundary.
   std::array<int, 2> face{-1, -1};
   std::array<int, 2> corner{-1, -1};
-  bool cut = false;          ///< cut (outline) or fold; boundary edges are always cut
+  /// Cut (outline) or fold; boundary edges are always cut. A plain flag for layout; the unfolders'
+  /// typed form is state() and edge_states().
+  bool cut = false;
   double fold_angle = 0;     ///< signed dihedral in radians: > 0 mountain, < 0 valley (see fold_angle())
   double length = 0;         ///< model units
   bool inside_face = false;  ///< joins two triangles of one flat face: never cut, never drawn
   bool boundary() const { return face[1] < 0; }
+  EdgeState state() const { return cut ? EdgeState::Cut : EdgeState::Fold; }
   /// A cut edge with a partner on the other side: the two sides are glued together.
   bool glued_seam() const { return cut && !boundary(); }
 };
@@ -47,11 +51,15 @@ struct Unfolding {
   int seam_count() const;
 };
 
-/// Lays every piece of the spanning forest given by `cut` (one flag per mesh edge; boundary edges
-/// are treated as cut whatever the flag) flat: a breadth-first walk over fold edges from the lowest
-/// face of each piece, each face placed by the rigid motion that maps its fold edge onto its parent's.
-/// The fold edges must form a forest (no cycle): cycles are broken by cutting the edge that closes them.
-Unfolding flatten(const Mesh& mesh, const std::vector<char>& cut);
+/// The state of every edge of `unfolding` (as flatten() takes it back).
+EdgeStates edge_states(const Unfolding& unfolding);
+
+/// Lays every piece of the spanning forest given by `state` (one per mesh edge; boundary edges are
+/// treated as cut whatever their state, edges past its end as folds) flat: a breadth-first walk over fold
+/// edges from the lowest face of each piece, each face placed by the rigid motion that maps its fold edge
+/// onto its parent's. The fold edges must form a forest (no cycle): cycles are broken by cutting the edge
+/// that closes them.
+Unfolding flatten(const Mesh& mesh, const EdgeStates& state);
 
 /// Every violation of the invariants above, one readable line each; empty when the unfolding is valid.
 /// `rel_tol` bounds the relative error of flat edge lengths.
