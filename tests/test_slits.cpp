@@ -149,8 +149,9 @@ TEST(Slits, ProgressIsReportedPerSlitTriedWithCountsThatNeverFall) {
   opt.progress = [&seen](long done, long total) { seen.emplace_back(done, total); };
   const SlitResult r = close_slits(tree, {}, opt);
   ASSERT_GE(static_cast<int>(seen.size()), r.slits_before) << "every slit is tried once in the first pass";
+  // One total for the whole run (a bar that does not rescale), never reached before the run ends.
   for (std::size_t k = 0; k < seen.size(); ++k) {
-    EXPECT_EQ(seen[k].second, static_cast<long>(opt.max_passes) * mesh.num_edges());
+    EXPECT_EQ(seen[k].second, seen.front().second) << "report " << k << " changed the total";
     EXPECT_LT(seen[k].first, seen[k].second);
     if (k > 0) {
       EXPECT_GT(seen[k].first, seen[k - 1].first) << "report " << k << " went back";

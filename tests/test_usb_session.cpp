@@ -137,7 +137,12 @@ TEST(UsbSession, BulkWritesAreWholePacketsOfTheEndpointNotAnAssumed64Bytes) {
     o.gpgl_status = false;  // one slice: only the chunking shows
     o.chunk_bytes = 1000;
     UsbSession session(cutter, o, cameo3());
-    EXPECT_EQ(session.chunk_bytes(), std::max<std::size_t>(packet, 1000 / packet * packet));
+    // The largest whole number of packets within the asked 1000 bytes, or one packet when it is larger.
+    const std::size_t chunk = session.chunk_bytes();
+    EXPECT_EQ(chunk % packet, 0u) << "packet " << packet;
+    EXPECT_GE(chunk, packet) << "packet " << packet;
+    EXPECT_TRUE(chunk <= 1000 || chunk == packet) << "packet " << packet << ": chunk " << chunk;
+    EXPECT_GT(chunk + packet, 1000u) << "packet " << packet << ": room for one more packet";
     const std::string job = gpgl_job(300);
     session.write(bytes_of(job));
     EXPECT_EQ(cutter.received, job);

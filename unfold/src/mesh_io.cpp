@@ -10,6 +10,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -368,7 +369,9 @@ void check_ascii_stl_text(const std::string& text, const std::string& name) {
 
 // OpenMesh's PLY reader loops forever or crashes on some malformed headers (an unknown keyword, an
 // element line without a count), so the header is checked strictly here: only what a triangle mesh needs.
-void check_ply_header(const std::string& text, const std::string& name, int face_limit) {
+
+// Where end_header starts, after checking the magic line and that end_header is a line of its own.
+std::size_t ply_header_end(const std::string& text, const std::string& name) {
   if (text.compare(0, 4, "ply\n") != 0 && text.compare(0, 5, "ply\r\n") != 0)
     throw InputError(name, "not a PLY file (no 'ply' magic line)");
   const auto end = text.find("end_header");
@@ -379,18 +382,72 @@ void check_ply_header(const std::string& text, const std::string& name, int face
   const bool own_line = (end > 0 && text[end - 1] == '\n') &&
                         (text.compare(after, 1, "\n") == 0 || text.compare(after, 2, "\r\n") == 0);
   if (!own_line) throw InputError(name, "malformed PLY header: end_header is not a line of its own");
-  static const std::vector<std::string> kTypes{"char",  "uchar",  "short",   "ushort", "int",   "uint",
-                                               "float", "double", "int8",    "uint8",  "int16", "uint16",
-                                               "int32", "uint32", "float32", "float64"};
-  const auto is_type = [](const std::string& t) {
-    return std::find(kTypes.begin(), kTypes.end(), t) != kTypes.end();
-  };
-  std::istringstream in(text.substr(0, end));
-  std::string line, format, element;
+  return end;
+}
+
+bool is_ply_type(const std::string& t) {
+  static constexpr std::array<std::string_view, 16> kTypes{
+      "char", "uchar", "short", "ushort", "int",   "uint",   "float",   "double",
+      "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+  return std::find(kTypes.begin(), kTypes.end(), t) != kTypes.end();
+}
+
+// What a PLY header declares, as far as a triangle mesh needs it.
+struct PlyHeader {
+  std::string format, element;  ///< element: the one the next property lines belong to
   std::uint64_t nv = 0, nf = 0;
   std::vector<detail::PlyProperty> vertex_layout, face_layout;
   bool has_vertex = false, has_face = false, face_list = false;
-  int xyz = 0, line_no = 0, vertex_properties = 0;
+  int xyz = 0, vertex_properties = 0;
+};
+
+// `element vertex N` or `element face N`, vertices first, each once.
+void read_ply_element(const std::vector<std::string>& w, const std::string& where, const std::string& name,
+                      PlyHeader& h) {
+  if (w.size() != 3 || w[2].find_first_not_of("0123456789") != std::string::npos || w[2].size() > 12)
+    throw InputError(name, "unparsable PLY element line" + where);
+  const std::uint64_t count = std::stoull(w[2]);
+  h.element = w[1];
+  if (h.element == "vertex") {
+    if (h.has_vertex) throw InputError(name, "two vertex elements" + where);
+    h.has_vertex = true;
+    h.nv = count;
+  } else if (h.element == "face") {
+    if (h.has_face || !h.has_vertex) throw InputError(name, "face element before vertices or twice" + where);
+    h.has_face = true;
+    h.nf = count;
+  } else {
+    throw InputError(name, "unsupported PLY element '" + h.element.substr(0, 32) + "'" + where);
+  }
+}
+
+// `property TYPE NAME` of the current element, or the face's one `property list COUNT INDEX vertex_indices`.
+void read_ply_property(const std::vector<std::string>& w, const std::string& where, const std::string& name,
+                       PlyHeader& h) {
+  if (h.element.empty()) throw InputError(name, "PLY property before any element" + where);
+  if (w.size() == 5 && w[1] == "list" && is_ply_type(w[2]) && is_ply_type(w[3])) {
+    if (h.element != "face" || h.face_list) throw InputError(name, "unsupported PLY list property" + where);
+    if (w[4] != "vertex_indices" && w[4] != "vertex_index")
+      throw InputError(name, "unsupported PLY face list '" + w[4].substr(0, 32) + "'" + where);
+    if (!detail::ply_integer_type(w[2]) || !detail::ply_integer_type(w[3]))
+      throw InputError(name, "PLY face list with a non-integer count or index type" + where);
+    h.face_list = true;
+    h.face_layout.push_back({w[3], w[2], w[4]});
+  } else if (w.size() == 3 && is_ply_type(w[1])) {
+    if (h.element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++h.xyz;
+    if (h.element == "vertex") ++h.vertex_properties;
+    (h.element == "vertex" ? h.vertex_layout : h.face_layout).push_back({w[1], "", w[2]});
+  } else {
+    throw InputError(name, "unparsable PLY property line" + where);
+  }
+}
+
+// The header lines before end_header, each checked as it is read; then that it names a triangle mesh.
+PlyHeader read_ply_header(const std::string& text, std::size_t end, const std::string& name) {
+  std::istringstream in(text.substr(0, end));
+  std::string line;
+  PlyHeader h;
+  int line_no = 0;
   std::getline(in, line);  // "ply"
   ++line_no;
   while (std::getline(in, line)) {
@@ -406,61 +463,39 @@ void check_ply_header(const std::string& text, const std::string& name, int face
       if (w.size() != 3 ||
           (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian") || w[2] != "1.0")
         throw InputError(name, "unsupported PLY format line" + where);
-      format = w[1];
+      h.format = w[1];
     } else if (w[0] == "element") {
-      if (w.size() != 3 || w[2].find_first_not_of("0123456789") != std::string::npos || w[2].size() > 12)
-        throw InputError(name, "unparsable PLY element line" + where);
-      const std::uint64_t count = std::stoull(w[2]);
-      element = w[1];
-      if (element == "vertex") {
-        if (has_vertex) throw InputError(name, "two vertex elements" + where);
-        has_vertex = true;
-        nv = count;
-      } else if (element == "face") {
-        if (has_face || !has_vertex) throw InputError(name, "face element before vertices or twice" + where);
-        has_face = true;
-        nf = count;
-      } else {
-        throw InputError(name, "unsupported PLY element '" + element.substr(0, 32) + "'" + where);
-      }
+      read_ply_element(w, where, name, h);
     } else if (w[0] == "property") {
-      if (element.empty()) throw InputError(name, "PLY property before any element" + where);
-      if (w.size() == 5 && w[1] == "list" && is_type(w[2]) && is_type(w[3])) {
-        if (element != "face" || face_list) throw InputError(name, "unsupported PLY list property" + where);
-        if (w[4] != "vertex_indices" && w[4] != "vertex_index")
-          throw InputError(name, "unsupported PLY face list '" + w[4].substr(0, 32) + "'" + where);
-        if (!detail::ply_integer_type(w[2]) || !detail::ply_integer_type(w[3]))
-          throw InputError(name, "PLY face list with a non-integer count or index type" + where);
-        face_list = true;
-        face_layout.push_back({w[3], w[2], w[4]});
-      } else if (w.size() == 3 && is_type(w[1])) {
-        if (element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++xyz;
-        if (element == "vertex") ++vertex_properties;
-        (element == "vertex" ? vertex_layout : face_layout).push_back({w[1], "", w[2]});
-      } else {
-        throw InputError(name, "unparsable PLY property line" + where);
-      }
+      read_ply_property(w, where, name, h);
     } else {
       throw InputError(name, "unparsable PLY header line '" + line.substr(0, 32) + "'" + where);
     }
   }
-  if (format.empty()) throw InputError(name, "PLY header without a format line");
-  if (!has_vertex || xyz != 3) throw InputError(name, "PLY header without vertex x, y and z");
-  if (!has_face || !face_list) throw InputError(name, "PLY header without a face list");
-  const bool ascii = format == "ascii";
-  check_face_limit(nf, face_limit, name);
-  check_declared_counts(nv, nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
+  if (h.format.empty()) throw InputError(name, "PLY header without a format line");
+  if (!h.has_vertex || h.xyz != 3) throw InputError(name, "PLY header without vertex x, y and z");
+  if (!h.has_face || !h.face_list) throw InputError(name, "PLY header without a face list");
+  return h;
+}
+
+void check_ply_header(const std::string& text, const std::string& name, int face_limit) {
+  const std::size_t end = ply_header_end(text, name);
+  const PlyHeader h = read_ply_header(text, end, name);
+  const bool ascii = h.format == "ascii";
+  check_face_limit(h.nf, face_limit, name);
+  check_declared_counts(h.nv, h.nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
   if (ascii) {
     const auto body = text.find('\n', end);
     detail::AsciiBlockOptions block;
-    block.exact_vertex_numbers = vertex_properties;
+    block.exact_vertex_numbers = h.vertex_properties;
     const std::size_t faces_at = detail::read_ascii_vertex_block(
-        text, body == std::string::npos ? text.size() : body + 1, nv, name, block);
-    detail::read_ascii_faces(text, faces_at, nf, nv, name, block);
+        text, body == std::string::npos ? text.size() : body + 1, h.nv, name, block);
+    detail::read_ascii_faces(text, faces_at, h.nf, h.nv, name, block);
   } else {
-    const std::size_t body = end + std::string("end_header").size() + (text[after] == '\r' ? 2 : 1);
-    detail::check_binary_ply_body(std::string_view(text).substr(body), format == "binary_big_endian",
-                                  vertex_layout, nv, face_layout, nf, kMaxCoordinate, name);
+    const std::size_t after = end + std::string("end_header").size();
+    const std::size_t body = after + (text[after] == '\r' ? 2 : 1);
+    detail::check_binary_ply_body(std::string_view(text).substr(body), h.format == "binary_big_endian",
+                                  h.vertex_layout, h.nv, h.face_layout, h.nf, kMaxCoordinate, name);
   }
 }
 
@@ -472,10 +507,8 @@ void silence_openmesh() {
   omout().disable();
 }
 
-}  // namespace
-
-LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
-  const std::string name = path.string();
+// The file exists, is a regular file and is within the size limit: its size in bytes.
+std::uintmax_t checked_file_size(const fs::path& path, const std::string& name, const LoadOptions& options) {
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) throw InputError(name, "no such file");
@@ -486,99 +519,145 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   if (size > options.max_file_bytes)
     throw InputError(name, "file is " + std::to_string(size) + " bytes, over the limit of " +
                                std::to_string(options.max_file_bytes) + " bytes");
+  return size;
+}
+
+// The file's extension in lower case, one of the formats load_mesh reads.
+std::string checked_extension(const fs::path& path, const std::string& name) {
   const std::string ext = lower(path.extension().string());
-  const bool gltf = ext == ".gltf" || ext == ".glb";
-  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply" && !gltf)
+  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply" && ext != ".gltf" && ext != ".glb")
     throw InputError(name,
                      "unsupported file type '" + ext + "' (expected .obj, .off, .stl, .ply, .gltf or .glb)");
+  return ext;
+}
 
-  if (ext == ".stl" && size >= 84) {
-    // A consistent binary STL states its triangle count up front: refuse one over the limit before
-    // reading (and holding) the whole file.
-    std::ifstream head(path, std::ios::binary);
-    char header[84];
-    if (head.read(header, sizeof header)) {
-      std::uint32_t count = 0;
-      std::memcpy(&count, header + 80, 4);
-      if (84 + 50 * static_cast<std::uint64_t>(count) == size)
-        check_face_limit(count, options.face_limit, name);
-    }
-  }
-  const std::string bytes = read_all(path, name);
-  if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw InputError(name, "empty file (only whitespace)");
-  detail::RepairOptions repair;
-  std::vector<std::string> reader_notes;
+// A consistent binary STL states its triangle count up front: refuse one over the limit before reading
+// (and holding) the whole file.
+void refuse_oversized_binary_stl(const fs::path& path, std::uintmax_t size, int face_limit,
+                                 const std::string& name) {
+  if (size < 84) return;
+  std::ifstream head(path, std::ios::binary);
+  char header[84];
+  if (!head.read(header, sizeof header)) return;
+  std::uint32_t count = 0;
+  std::memcpy(&count, header + 80, 4);
+  if (84 + 50 * static_cast<std::uint64_t>(count) == size) check_face_limit(count, face_limit, name);
+}
+
+// What a format's reader hands on to the repairs, besides the soup itself.
+struct FileSoup {
   PolygonSoup soup;
-  LoadedMesh out;
-  ObjFacts obj;
-  // The first vertex number in the format's own face lists (glTF indices count from 0 too).
-  out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
-  if (gltf) {
-    soup = detail::read_gltf(bytes, path, name, {options.max_file_bytes, options.face_limit}, reader_notes);
-  } else if (ext == ".obj") {
-    obj = check_obj_text(bytes, name, options.face_limit);
-    out.file_seams = obj.seams;
-  } else if (ext == ".stl") {
-    if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
-    repair.weld_all = true;
-  } else if (ext != ".off") {
-    check_ply_header(bytes, name, options.face_limit);
-  }
+  detail::RepairOptions repair;
+  std::vector<std::string> notes;  ///< the reader's notes (texture files, materials)
+  std::vector<FileEdge> seams;     ///< OBJ `l` elements
+};
 
+// OBJ, STL and PLY through OpenMesh's readers into the soup (their text already checked), with the colours
+// and textures they name.
+void read_with_openmesh(const fs::path& path, const std::string& ext, const std::string& bytes, ObjFacts obj,
+                        FileSoup& out) {
+  const std::string name = path.string();
+  silence_openmesh();
+  RawColours colours;
+  SoupImporter importer(out.soup, colours);
+  OpenMesh::IO::Options read_options;
+  read_options += OpenMesh::IO::Options::FaceTexCoord;
+  read_options += OpenMesh::IO::Options::FaceColor;
+  read_options += OpenMesh::IO::Options::VertexColor;
+  if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
+    throw InputError(name, "unparsable " + ext.substr(1) + " file");
+  // map_Kd names are relative to the MTL file, which mtllib names relative to the OBJ.
+  fs::path texture_dir = path.parent_path();
+  if (ext == ".obj")
+    if (const auto mtl = detail::obj_material_library(bytes, path)) {
+      texture_dir = mtl->parent_path();
+      std::error_code exists_ec;
+      if (!fs::is_regular_file(*mtl, exists_ec))
+        out.notes.push_back("material library " + mtl->string() + " not found: faces print white");
+    }
+  colours.material_names = std::move(obj.material_names);
+  colours.face_material_name = std::move(obj.face_material_name);
+  detail::attach_raw_colours(std::move(colours), texture_dir, out.soup, out.notes);
+}
+
+// The file's polygons as its format's reader finds them, after the format's own checks.
+FileSoup read_file_soup(const fs::path& path, const std::string& ext, const std::string& bytes,
+                        const LoadOptions& options) {
+  const std::string name = path.string();
+  FileSoup out;
+  if (ext == ".gltf" || ext == ".glb") {
+    out.soup = detail::read_gltf(bytes, path, name, {options.max_file_bytes, options.face_limit}, out.notes);
+    return out;
+  }
   if (ext == ".off") {
     RawColours colours;
-    soup = detail::read_off(bytes, name, options.face_limit, colours);
-    detail::attach_raw_colours(std::move(colours), path.parent_path(), soup, reader_notes);
-  } else if (!gltf) {
-    silence_openmesh();
-    RawColours colours;
-    SoupImporter importer(soup, colours);
-    OpenMesh::IO::Options read_options;
-    read_options += OpenMesh::IO::Options::FaceTexCoord;
-    read_options += OpenMesh::IO::Options::FaceColor;
-    read_options += OpenMesh::IO::Options::VertexColor;
-    if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
-      throw InputError(name, "unparsable " + ext.substr(1) + " file");
-    // map_Kd names are relative to the MTL file, which mtllib names relative to the OBJ.
-    fs::path texture_dir = path.parent_path();
-    if (ext == ".obj")
-      if (const auto mtl = detail::obj_material_library(bytes, path)) {
-        texture_dir = mtl->parent_path();
-        std::error_code exists_ec;
-        if (!fs::is_regular_file(*mtl, exists_ec))
-          reader_notes.push_back("material library " + mtl->string() + " not found: faces print white");
-      }
-    colours.material_names = std::move(obj.material_names);
-    colours.face_material_name = std::move(obj.face_material_name);
-    detail::attach_raw_colours(std::move(colours), texture_dir, soup, reader_notes);
+    out.soup = detail::read_off(bytes, name, options.face_limit, colours);
+    detail::attach_raw_colours(std::move(colours), path.parent_path(), out.soup, out.notes);
+    return out;
   }
-  if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
+  ObjFacts obj;
+  if (ext == ".obj") {
+    obj = check_obj_text(bytes, name, options.face_limit);
+    out.seams = obj.seams;
+  } else if (ext == ".stl") {
+    if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
+    out.repair.weld_all = true;
+  } else {
+    check_ply_header(bytes, name, options.face_limit);
+  }
+  read_with_openmesh(path, ext, bytes, std::move(obj), out);
+  return out;
+}
 
+// Polygons become at least this many triangles: refused over the limit before any repair runs.
+void check_triangle_count(const PolygonSoup& soup, int face_limit, const std::string& name) {
   std::uint64_t triangles = 0;
   for (const auto& poly : soup.polygons)
     triangles += poly.size() >= 3 ? poly.size() - 2 : 1;
-  if (triangles > static_cast<std::uint64_t>(options.face_limit))
+  if (triangles > static_cast<std::uint64_t>(face_limit))
     throw InputError(name, std::to_string(triangles) + " triangles, over the limit of " +
-                               std::to_string(options.face_limit) + " (decimate the mesh first)");
+                               std::to_string(face_limit) + " (decimate the mesh first)");
+}
 
-  out.original_faces = static_cast<int>(soup.polygons.size());
-  detail::Repaired repaired = detail::repair_soup(std::move(soup), name, repair, out.notes);
+// Down to options.max_faces (quadric error), when the mesh has more.
+void decimate_to_limit(LoadedMesh& out, const LoadOptions& options) {
+  if (!options.max_faces || out.mesh.num_faces() <= *options.max_faces) return;
+  const int before = out.mesh.num_faces();
+  out.mesh = decimate(out.mesh, *options.max_faces);
+  out.origin = {};  // no vertex of the file is kept as it was
+  out.notes.push_back("decimated from " + std::to_string(before) + " to " +
+                      std::to_string(out.mesh.num_faces()) + " faces (quadric error)");
+}
+
+}  // namespace
+
+LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
+  const std::string name = path.string();
+  const std::uintmax_t size = checked_file_size(path, name, options);
+  const std::string ext = checked_extension(path, name);
+  if (ext == ".stl") refuse_oversized_binary_stl(path, size, options.face_limit, name);
+  const std::string bytes = read_all(path, name);
+  if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(name, "empty file (only whitespace)");
+  FileSoup file = read_file_soup(path, ext, bytes, options);
+  if (file.soup.polygons.empty()) throw InputError(name, "no faces in the file");
+  check_triangle_count(file.soup, options.face_limit, name);
+
+  LoadedMesh out;
+  out.file_seams = std::move(file.seams);
+  // The first vertex number in the format's own face lists (glTF indices count from 0 too).
+  out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
+  out.original_faces = static_cast<int>(file.soup.polygons.size());
+  detail::Repaired repaired = detail::repair_soup(std::move(file.soup), name, file.repair, out.notes);
   out.mesh = std::move(repaired.mesh);
   out.origin = std::move(repaired.origin);
-  out.notes.insert(out.notes.end(), reader_notes.begin(), reader_notes.end());
+  out.notes.insert(out.notes.end(), file.notes.begin(), file.notes.end());
   if (ext == ".stl")
     out.notes.insert(out.notes.begin(),
                      "welded " + std::to_string(3 * static_cast<std::uint64_t>(out.original_faces)) +
                          " triangle corners into " + std::to_string(out.mesh.num_vertices()) +
                          " shared vertices");
-  if (options.max_faces && out.mesh.num_faces() > *options.max_faces) {
-    const int before = out.mesh.num_faces();
-    out.mesh = decimate(out.mesh, *options.max_faces);
-    out.origin = {};  // no vertex of the file is kept as it was
-    out.notes.push_back("decimated from " + std::to_string(before) + " to " +
-                        std::to_string(out.mesh.num_faces()) + " faces (quadric error)");
-  }
+  decimate_to_limit(out, options);
   return out;
 }
 

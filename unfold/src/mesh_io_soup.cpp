@@ -287,111 +287,143 @@ std::size_t weld_boundary_seams(const std::vector<Vec3>& points, std::vector<Tri
   return welded;
 }
 
+// One pass of remove_zero_area: the adjacency of the triangles as the pass found them, and which faces a
+// repair of this pass has already changed (touched) or deleted (removed). A face is repaired at most once
+// per pass, so every repair sees the adjacency it was planned on.
+struct ZeroAreaPass {
+  EdgeFaces map;
+  std::vector<std::vector<int>> vertex_faces;
+  std::vector<char> touched, removed;
+
+  ZeroAreaPass(std::size_t num_points, const std::vector<Tri>& tris)
+      : map(edge_faces(tris)), vertex_faces(num_points), touched(tris.size(), 0), removed(tris.size(), 0) {
+    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+      for (int v : tris[f])
+        vertex_faces[v].push_back(f);
+  }
+};
+
+// The vertices of the faces around v, sorted, each once; false when one of those faces is already touched.
+bool untouched_ring(const ZeroAreaPass& pass, const std::vector<Tri>& tris, int v, std::vector<int>& ring) {
+  bool ok = true;
+  for (int g : pass.vertex_faces[v]) {
+    ok = ok && !pass.touched[g];
+    for (int x : tris[g])
+      ring.push_back(x);
+  }
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  return ok;
+}
+
+// Collapses edge u->w into u (removing the faces on it) when the link condition holds: the vertices both
+// ends share are exactly the corners opposite the edge, so the surface is not glued to itself. The number
+// of faces removed; 0 when the collapse is not made.
+std::size_t collapse_edge(ZeroAreaPass& pass, std::vector<Tri>& tris, std::vector<int>& alias, int u, int w) {
+  const auto& uses = pass.map.at(edge_key(u, w));
+  bool ok = true;
+  for (auto [g, j] : uses)
+    ok = ok && !pass.touched[g];
+  std::vector<int> opposite;
+  for (auto [g, j] : uses)
+    opposite.push_back(tris[g][(j + 2) % 3]);
+  std::vector<int> nu, nw;
+  ok = untouched_ring(pass, tris, u, nu) && ok;
+  ok = untouched_ring(pass, tris, w, nw) && ok;
+  if (!ok) return 0;
+  std::vector<int> common;
+  std::set_intersection(nu.begin(), nu.end(), nw.begin(), nw.end(), std::back_inserter(common));
+  std::erase_if(common, [&](int v) { return v == u || v == w; });
+  std::sort(opposite.begin(), opposite.end());
+  if (common != opposite) return 0;  // collapsing would glue the surface to itself
+  for (auto [g, j] : uses)
+    pass.removed[g] = 1;
+  for (int g : pass.vertex_faces[w]) {
+    pass.touched[g] = 1;
+    for (int& v : tris[g])
+      if (v == w) v = u;
+  }
+  alias[w] = u;
+  for (int g : pass.vertex_faces[u])
+    pass.touched[g] = 1;
+  return uses.size();
+}
+
+// Removes cap f, whose corner opposite its `longest` edge lies on that edge, by flipping the edge with the
+// neighbour across it (or dropping f when it has none). 1 when the cap is gone, 0 when it must wait.
+std::size_t flip_cap(ZeroAreaPass& pass, std::vector<Tri>& tris, TriOrigin& origin, int f, int longest) {
+  const Tri t = tris[f];
+  const int q = t[longest], r = t[(longest + 1) % 3], p = t[(longest + 2) % 3];
+  const auto& uses = pass.map.at(edge_key(q, r));
+  if (uses.size() == 1) {
+    pass.removed[f] = pass.touched[f] = 1;  // a cap on the border covers nothing: drop it
+    return 1;
+  }
+  const auto [g, j] = uses[0].first == f ? uses[1] : uses[0];
+  if (pass.touched[g]) return 0;
+  const int w = tris[g][(j + 2) % 3];
+  if (w == p || pass.map.count(edge_key(p, w))) return 0;
+  tris[f] = {p, q, w};
+  tris[g] = {p, w, r};
+  // The corners keep the texture coordinates of the corners they were (p and q of f, w and r of g).
+  const Tri cf = origin.corner[f], cg = origin.corner[g];
+  const int cp = cf[(longest + 2) % 3], cq = cf[longest], cw = cg[(j + 2) % 3], cr = cg[j];
+  origin.corner[f] = {cp, cq, cw};
+  origin.corner[g] = {cp, cw, cr};
+  pass.touched[f] = pass.touched[g] = 1;
+  return 1;  // the flipped-in pair covers what the neighbour covered: the cap is gone
+}
+
+// Repairs zero-area face f (not yet touched in this pass): a collapse when two corners coincide, else a
+// flip. The number of faces the repair took away.
+std::size_t repair_zero_area_face(ZeroAreaPass& pass, const std::vector<Vec3>& points, std::vector<Tri>& tris,
+                                  std::vector<int>& alias, TriOrigin& origin, int f) {
+  const Tri t = tris[f];
+  double len2[3];
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 d = points[t[(i + 1) % 3]] - points[t[i]];
+    len2[i] = dot(d, d);
+  }
+  const int shortest = static_cast<int>(std::min_element(len2, len2 + 3) - len2);
+  const int longest = static_cast<int>(std::max_element(len2, len2 + 3) - len2);
+  if (len2[shortest] <= kCoincidentRelative * kCoincidentRelative * len2[longest] || len2[longest] == 0.0)
+    return collapse_edge(pass, tris, alias, t[shortest], t[(shortest + 1) % 3]);
+  return flip_cap(pass, tris, origin, f, longest);
+}
+
+// Keeps the triangles (and their origins) that no repair removed.
+void drop_removed(const std::vector<char>& removed, std::vector<Tri>& tris, TriOrigin& origin) {
+  std::vector<Tri> kept;
+  TriOrigin kept_origin;
+  kept.reserve(tris.size());
+  for (std::size_t f = 0; f < tris.size(); ++f)
+    if (!removed[f]) {
+      kept.push_back(tris[f]);
+      kept_origin.corner.push_back(origin.corner[f]);
+      kept_origin.polygon.push_back(origin.polygon[f]);
+    }
+  tris = std::move(kept);
+  origin = std::move(kept_origin);
+}
+
 // Removes zero-area faces without changing the surface: a face with two coincident corners is removed by
 // collapsing that edge (when the link condition keeps the mesh manifold); a face whose corner lies on the
-// opposite edge is removed by flipping that edge with the neighbour across it.
+// opposite edge is removed by flipping that edge with the neighbour across it. Repairs run in passes
+// (a repair can make the next possible) until none is left or a pass makes no progress.
 std::size_t remove_zero_area(std::vector<Vec3>& points, std::vector<Tri>& tris, std::vector<int>& alias,
                              const std::string& name, TriOrigin& origin) {
+  constexpr int kMaxPasses = 32;
   std::size_t fixed = 0;
-  for (int pass = 0; pass < 32; ++pass) {
+  for (int round = 0; round < kMaxPasses; ++round) {
     std::vector<int> degenerate;
     for (int f = 0; f < static_cast<int>(tris.size()); ++f)
       if (is_zero_area(points, tris[f])) degenerate.push_back(f);
     if (degenerate.empty()) return fixed;
-    const EdgeFaces map = edge_faces(tris);
-    std::vector<std::vector<int>> vertex_faces(points.size());
-    for (int f = 0; f < static_cast<int>(tris.size()); ++f)
-      for (int v : tris[f])
-        vertex_faces[v].push_back(f);
-    std::vector<char> touched(tris.size(), 0), removed(tris.size(), 0);
+    ZeroAreaPass pass(points.size(), tris);
     std::size_t progress = 0;
-    for (int f : degenerate) {
-      if (touched[f]) continue;
-      const Tri t = tris[f];
-      double len2[3];
-      for (int i = 0; i < 3; ++i) {
-        const Vec3 d = points[t[(i + 1) % 3]] - points[t[i]];
-        len2[i] = dot(d, d);
-      }
-      const int shortest = static_cast<int>(std::min_element(len2, len2 + 3) - len2);
-      const int longest = static_cast<int>(std::max_element(len2, len2 + 3) - len2);
-      if (len2[shortest] <= kCoincidentRelative * kCoincidentRelative * len2[longest] ||
-          len2[longest] == 0.0) {
-        const int u = t[shortest], w = t[(shortest + 1) % 3];
-        const auto& uses = map.at(edge_key(u, w));
-        bool ok = true;
-        for (auto [g, j] : uses)
-          ok = ok && !touched[g];
-        std::vector<int> opposite;
-        for (auto [g, j] : uses)
-          opposite.push_back(tris[g][(j + 2) % 3]);
-        std::vector<int> nu, nw;
-        for (int g : vertex_faces[u]) {
-          ok = ok && !touched[g];
-          for (int v : tris[g])
-            nu.push_back(v);
-        }
-        for (int g : vertex_faces[w]) {
-          ok = ok && !touched[g];
-          for (int v : tris[g])
-            nw.push_back(v);
-        }
-        if (!ok) continue;
-        std::sort(nu.begin(), nu.end());
-        nu.erase(std::unique(nu.begin(), nu.end()), nu.end());
-        std::sort(nw.begin(), nw.end());
-        nw.erase(std::unique(nw.begin(), nw.end()), nw.end());
-        std::vector<int> common;
-        std::set_intersection(nu.begin(), nu.end(), nw.begin(), nw.end(), std::back_inserter(common));
-        std::erase_if(common, [&](int v) { return v == u || v == w; });
-        std::sort(opposite.begin(), opposite.end());
-        if (common != opposite) continue;  // collapsing would glue the surface to itself
-        for (auto [g, j] : uses)
-          removed[g] = 1;
-        progress += uses.size();
-        for (int g : vertex_faces[w]) {
-          touched[g] = 1;
-          for (int& v : tris[g])
-            if (v == w) v = u;
-        }
-        alias[w] = u;
-        for (int g : vertex_faces[u])
-          touched[g] = 1;
-        continue;
-      }
-      // A cap: corner p lies on the longest edge q->r.
-      const int q = t[longest], r = t[(longest + 1) % 3], p = t[(longest + 2) % 3];
-      const auto& uses = map.at(edge_key(q, r));
-      if (uses.size() == 1) {
-        removed[f] = touched[f] = 1;  // a cap on the border covers nothing: drop it
-        ++progress;
-        continue;
-      }
-      const auto [g, j] = uses[0].first == f ? uses[1] : uses[0];
-      if (touched[g]) continue;
-      const int w = tris[g][(j + 2) % 3];
-      if (w == p || map.count(edge_key(p, w))) continue;
-      tris[f] = {p, q, w};
-      tris[g] = {p, w, r};
-      // The corners keep the texture coordinates of the corners they were (p and q of f, w and r of g).
-      const Tri cf = origin.corner[f], cg = origin.corner[g];
-      const int cp = cf[(longest + 2) % 3], cq = cf[longest], cw = cg[(j + 2) % 3], cr = cg[j];
-      origin.corner[f] = {cp, cq, cw};
-      origin.corner[g] = {cp, cw, cr};
-      touched[f] = touched[g] = 1;
-      ++progress;  // the flipped-in pair covers what the neighbour covered: the cap is gone
-    }
-    std::vector<Tri> kept;
-    TriOrigin kept_origin;
-    kept.reserve(tris.size());
-    for (std::size_t f = 0; f < tris.size(); ++f)
-      if (!removed[f]) {
-        kept.push_back(tris[f]);
-        kept_origin.corner.push_back(origin.corner[f]);
-        kept_origin.polygon.push_back(origin.polygon[f]);
-      }
-    tris = std::move(kept);
-    origin = std::move(kept_origin);
+    for (int f : degenerate)
+      if (!pass.touched[f]) progress += repair_zero_area_face(pass, points, tris, alias, origin, f);
+    drop_removed(pass.removed, tris, origin);
     fixed += progress;
     if (progress == 0) break;
   }
@@ -499,10 +531,9 @@ void attach_attributes(const PolygonSoup& soup, const TriOrigin& origin, Mesh& m
   mesh.materials = soup.materials;
 }
 
-}  // namespace
-
-Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
-                     std::vector<std::string>& notes) {
+// Every coordinate finite and in range, every polygon with three corners or more naming existing
+// vertices, and at least one polygon.
+void check_indices(const PolygonSoup& soup, const std::string& name) {
   const int nv = static_cast<int>(soup.vertices.size());
   for (int v = 0; v < nv; ++v) {
     const Vec3 p = soup.vertices[v];
@@ -523,31 +554,28 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
                                    std::to_string(v + 1) + " (only " + std::to_string(nv) + " vertices)");
   }
   if (soup.polygons.empty()) throw InputError(name, "no faces in the file");
+}
 
-  Repaired out;
-  out.origin.file_edges = polygon_edges(soup.polygons);
-  std::vector<int> file_index(nv);
-  std::iota(file_index.begin(), file_index.end(), 0);
-  // alias[p]: the point that replaced point p in every face (welds, collapses); p itself if none.
-  std::vector<int> alias = file_index;
-  if (options.weld_all) {
-    // The caller reports STL welding as corners -> vertices: OpenMesh's STL reader already merges some,
-    // this makes it exact whatever the reader did.
-    std::map<std::array<double, 3>, int> first;
-    std::vector<int> remap(nv);
-    for (int v = 0; v < nv; ++v) {
-      const Vec3 p = soup.vertices[v];
-      remap[v] = first.try_emplace({p.x, p.y, p.z}, v).first->second;
-    }
-    for (auto& poly : soup.polygons)
-      for (int& v : poly)
-        v = remap[v];
-    alias = remap;
+// Every vertex replaced by the first vertex at exactly its position, in the polygons; the replacement of
+// each vertex (itself if first). The caller reports STL welding as corners -> vertices: OpenMesh's STL
+// reader already merges some, this makes it exact whatever the reader did.
+std::vector<int> weld_all_coincident(PolygonSoup& soup) {
+  const int nv = static_cast<int>(soup.vertices.size());
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> remap(nv);
+  for (int v = 0; v < nv; ++v) {
+    const Vec3 p = soup.vertices[v];
+    remap[v] = first.try_emplace({p.x, p.y, p.z}, v).first->second;
   }
+  for (auto& poly : soup.polygons)
+    for (int& v : poly)
+      v = remap[v];
+  return remap;
+}
 
-  check_attributes(soup, name);
-  std::vector<int> file_face(soup.polygons.size());  // the file's face index of each polygon
-  std::iota(file_face.begin(), file_face.end(), 0);
+// Removes repeated corners from every polygon (with their texture coordinates), then the polygons left with
+// fewer than three; the number of polygons removed.
+std::size_t remove_repeated_corners(PolygonSoup& soup, std::vector<int>& file_face) {
   std::size_t dropped = 0;
   for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
     auto& poly = soup.polygons[f];
@@ -563,41 +591,22 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
     poly = std::move(clean);
     if (!soup.polygon_uvs.empty()) soup.polygon_uvs[f] = std::move(clean_uvs);
   }
-  if (dropped > 0) {
-    drop_short_polygons(soup, file_face);
-    notes.push_back("dropped " + plural(dropped, "face") + " with repeated corners");
-    if (soup.polygons.empty()) throw InputError(name, "every face has repeated corners");
-  }
+  if (dropped > 0) drop_short_polygons(soup, file_face);
+  return dropped;
+}
 
-  {
-    std::vector<char> used(nv, 0);
-    for (const auto& poly : soup.polygons)
-      for (int v : poly)
-        used[v] = 1;
-    const auto unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
-    if (unused > 0 && !options.weld_all)
-      notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
-  }
-  TriOrigin origin;
-  std::vector<Tri> tris = triangulate_all(soup, notes, origin);
-  std::vector<Vec3> points = std::move(soup.vertices);
-  if (!options.weld_all) {
-    if (const std::size_t seams = weld_boundary_seams(points, tris, alias); seams > 0)
-      notes.push_back("welded " + plural(seams, "coincident vertex") + " along open seams");
-  }
+std::size_t count_unused_vertices(const PolygonSoup& soup) {
+  std::vector<char> used(soup.vertices.size(), 0);
+  for (const auto& poly : soup.polygons)
+    for (int v : poly)
+      used[v] = 1;
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+}
 
-  EdgeFaces map = edge_faces(tris);
-  check_edge_manifold(tris, map, file_index, name);
-  if (const std::size_t flips = orient_consistently(tris, map, name, &origin); flips > 0)
-    notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
-
-  if (const std::size_t fixed = remove_zero_area(points, tris, alias, name, origin); fixed > 0)
-    notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
-  if (tris.empty()) throw InputError(name, "every face has zero area");
-  if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
-    notes.push_back("split " + plural(split, "non-manifold vertex") + " into one copy per fan of faces");
-
-  // Drop unused vertices so that every vertex of the Mesh is on the surface.
+// Keeps only the points some triangle uses, numbered in order of first use; renumbers the triangles and
+// appends, per kept point, its vertex in the file to file_vertex.
+std::vector<Vec3> keep_used_points(const std::vector<Vec3>& points, const std::vector<int>& file_index,
+                                   std::vector<Tri>& tris, std::vector<int>& file_vertex) {
   std::vector<int> new_index(points.size(), -1);
   std::vector<Vec3> used;
   for (Tri& t : tris)
@@ -605,47 +614,104 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
       if (new_index[v] < 0) {
         new_index[v] = static_cast<int>(used.size());
         used.push_back(points[v]);
-        out.origin.file_vertex.push_back(file_index[v]);
+        file_vertex.push_back(file_index[v]);
       }
       v = new_index[v];
     }
-  out.origin.merged_into.resize(nv);
-  for (int v = 0; v < nv; ++v)
-    out.origin.merged_into[v] = find_root(alias, v);
+  return used;
+}
 
-  // Closed components are turned so their signed volume is positive (normals outward).
+// How many connected components the triangles form, and how many closed ones were turned outward.
+struct Components {
+  std::size_t count = 0, turned = 0;
+};
+
+// Turns every closed component whose signed volume is negative (normals inward) the other way round.
+Components turn_closed_components_outward(const std::vector<Vec3>& points, std::vector<Tri>& tris,
+                                          TriOrigin& origin) {
   const int nf = static_cast<int>(tris.size());
   DisjointSets components_of(nf);
-  map = edge_faces(tris);
-  std::unordered_map<int, bool> closed;
+  const EdgeFaces map = edge_faces(tris);
+  std::unordered_set<int> open;
   for (const auto& [key, uses] : map)
     if (uses.size() == 2) components_of.join(uses[0].first, uses[1].first);
   for (const auto& [key, uses] : map)
-    if (uses.size() == 1) closed[components_of.find(uses[0].first)] = false;
+    if (uses.size() == 1) open.insert(components_of.find(uses[0].first));
   std::unordered_map<int, double> volume;
   for (int f = 0; f < nf; ++f) {
-    const Vec3 a = used[tris[f][0]], b = used[tris[f][1]], c = used[tris[f][2]];
+    const Vec3 a = points[tris[f][0]], b = points[tris[f][1]], c = points[tris[f][2]];
     volume[components_of.find(f)] += dot(a, cross(b, c));
   }
   // One pass over the faces for all components: a pass per inward component was quadratic (50,000
   // inverted tetrahedra took 81 s).
-  std::size_t turned = 0, components = 0;
+  Components out;
   std::unordered_set<int> inward;
   for (const auto& [root, vol] : volume) {
-    ++components;
-    if (closed.count(root) || vol >= 0) continue;
+    ++out.count;
+    if (open.count(root) || vol >= 0) continue;
     inward.insert(root);
-    ++turned;
+    ++out.turned;
   }
-  if (turned > 0)
+  if (out.turned > 0)
     for (int f = 0; f < nf; ++f)
       if (inward.count(components_of.find(f))) {
         std::swap(tris[f][1], tris[f][2]);
         origin.flip(f);
       }
-  if (turned > 0) notes.push_back("turned " + plural(turned, "closed component") + " outward");
-  if (components > 1)
-    notes.push_back(std::to_string(components) + " connected components: unfolded separately");
+  return out;
+}
+
+}  // namespace
+
+Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOptions& options,
+                     std::vector<std::string>& notes) {
+  check_indices(soup, name);
+  const int nv = static_cast<int>(soup.vertices.size());
+  Repaired out;
+  out.origin.file_edges = polygon_edges(soup.polygons);
+  std::vector<int> file_index(nv);
+  std::iota(file_index.begin(), file_index.end(), 0);
+  // alias[p]: the point that replaced point p in every face (welds, collapses); p itself if none.
+  std::vector<int> alias = options.weld_all ? weld_all_coincident(soup) : file_index;
+
+  check_attributes(soup, name);
+  std::vector<int> file_face(soup.polygons.size());  // the file's face index of each polygon
+  std::iota(file_face.begin(), file_face.end(), 0);
+  if (const std::size_t dropped = remove_repeated_corners(soup, file_face); dropped > 0) {
+    notes.push_back("dropped " + plural(dropped, "face") + " with repeated corners");
+    if (soup.polygons.empty()) throw InputError(name, "every face has repeated corners");
+  }
+  if (const std::size_t unused = count_unused_vertices(soup); unused > 0 && !options.weld_all)
+    notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
+
+  TriOrigin origin;
+  std::vector<Tri> tris = triangulate_all(soup, notes, origin);
+  std::vector<Vec3> points = std::move(soup.vertices);
+  if (!options.weld_all) {
+    if (const std::size_t seams = weld_boundary_seams(points, tris, alias); seams > 0)
+      notes.push_back("welded " + plural(seams, "coincident vertex") + " along open seams");
+  }
+  const EdgeFaces map = edge_faces(tris);
+  check_edge_manifold(tris, map, file_index, name);
+  if (const std::size_t flips = orient_consistently(tris, map, name, &origin); flips > 0)
+    notes.push_back("re-oriented " + plural(flips, "face") + " to match their neighbours");
+  if (const std::size_t fixed = remove_zero_area(points, tris, alias, name, origin); fixed > 0)
+    notes.push_back("removed " + plural(fixed, "zero-area face") + " (collapsed or flipped)");
+  if (tris.empty()) throw InputError(name, "every face has zero area");
+  if (const std::size_t split = split_pinched_vertices(points, file_index, tris); split > 0)
+    notes.push_back("split " + plural(split, "non-manifold vertex") + " into one copy per fan of faces");
+
+  // Every vertex of the Mesh is on the surface.
+  std::vector<Vec3> used = keep_used_points(points, file_index, tris, out.origin.file_vertex);
+  out.origin.merged_into.resize(nv);
+  for (int v = 0; v < nv; ++v)
+    out.origin.merged_into[v] = find_root(alias, v);
+  // Closed components are turned so their signed volume is positive (normals outward).
+  const Components components = turn_closed_components_outward(used, tris, origin);
+  if (components.turned > 0)
+    notes.push_back("turned " + plural(components.turned, "closed component") + " outward");
+  if (components.count > 1)
+    notes.push_back(std::to_string(components.count) + " connected components: unfolded separately");
   out.mesh = make_mesh(std::move(used), std::move(tris), name);
   attach_attributes(soup, origin, out.mesh);
   out.mesh.face_polygon.resize(origin.polygon.size());
