@@ -42,6 +42,15 @@ struct TabPlan {
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
                   std::span<const int> order = {});
 
+/// The widths a tab on an edge of `edge_length_mm` is tried at, widest first: the full width (at most
+/// width_per_length of the edge), then narrower by steps, down to min_width_mm (always the last).
+std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& options);
+
+/// Whether `seam` is a narrow slit: its two sides are neighbours on one outline, meeting at the slit's
+/// tip, and their far ends are closer than a tab of min_width_mm (with a little to spare) needs. No tab
+/// fits there; the maker closes it edge to edge.
+bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& options);
+
 /// The trapezoid on the outer side of outline edge a->b (piece on the left) of width w with slanted
 /// ends at angles slant_a, slant_b from the edge; narrowed so that its outer side stays positive.
 Polygon tab_trapezoid(Vec2 a, Vec2 b, double width_mm, double slant_a_rad, double slant_b_rad);
