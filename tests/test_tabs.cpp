@@ -48,7 +48,7 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     for (std::size_t s = 0; s < seams.size(); ++s) {
       const auto& tab = plan.tab_of_seam[s];
       const bool dropped =
-          std::find(plan.dropped.begin(), plan.dropped.end(), static_cast<int>(s)) != plan.dropped.end();
+          std::find(plan.dropped.begin(), plan.dropped.end(), SeamId{s}) != plan.dropped.end();
       ASSERT_NE(tab.has_value(), dropped);
       if (!tab) continue;
       ++placed;
@@ -64,8 +64,9 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     }
     // Dropping is the last resort: a seam between two pieces always finds room on one side; only the
     // narrow notches and slits inside one piece (the MST baseline makes some) can lack it.
-    for (int s : plan.dropped)
-      EXPECT_EQ(seams[s].sides[0].piece, seams[s].sides[1].piece) << name << ": seam " << s;
+    for (SeamId s : plan.dropped)
+      EXPECT_EQ(seams[s.index()].sides[0].piece, seams[s.index()].sides[1].piece)
+          << name << ": seam " << s.value();
     EXPECT_GT(placed, 0.8 * seams.size()) << name;
   }
 }
@@ -85,7 +86,7 @@ TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
   std::vector<int> tabs_on_edge(n, 0);
   for (const auto& tab : plan.tab_of_seam) {
     ASSERT_TRUE(tab.has_value());
-    tabs_on_edge[seams[tab->seam].sides[tab->side].index] += 1;
+    tabs_on_edge[seams[tab->seam.index()].sides[tab->side].index] += 1;
   }
   // Walking round the outline, an edge with a tab is followed by one without: three of each, alternating.
   for (std::size_t i = 0; i < n; ++i)
@@ -188,8 +189,8 @@ TEST(Tabs, OnTheDefaultUnfoldingOfRealExamplesFewTabsAreDropped) {
     const auto seams = find_seams(split.unfolding, pieces);
     const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
     int slits = 0;
-    for (int s : plan.dropped)
-      slits += is_narrow_slit(pieces, seams[s], TabOptions{});
+    for (SeamId s : plan.dropped)
+      slits += is_narrow_slit(pieces, seams[s.index()], TabOptions{});
     const double all = static_cast<double>(plan.dropped.size()) / seams.size();
     const double others = static_cast<double>(plan.dropped.size() - slits) / seams.size();
     std::printf("%s: %zu seams, %zu dropped (%.1f%%), %d of them slits; others %.1f%%\n", name, seams.size(),

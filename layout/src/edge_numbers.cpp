@@ -321,7 +321,7 @@ class LabelPlacer {
 
   Label make_label(const SideTask& side, Vec2 at, Vec2 dir, double h, const Form& f, bool on_tab) const {
     Label label;
-    label.seam = side.seam;
+    label.seam = SeamId{side.seam};
     label.side = side.side;
     label.piece = side.piece;
     label.text = text_of(side, f);

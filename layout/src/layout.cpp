@@ -350,13 +350,13 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
   std::vector<bool> changed(d.pieces.size(), false);
   bool any = false;
   for (const Label& l : d.labels)
-    if (l.text != texts.full[l.seam][l.side]) changed[l.piece] = any = true;
+    if (l.text != texts.full[l.seam.index()][l.side]) changed[l.piece] = any = true;
   if (!any) return;
   std::vector<Label> again = place_draft_labels(d, texts);
   // A new label that sticks out where packing kept no room gives way to the first label of its side
   // (packed, so inside the shape) when that one is clear of the piece's new labels; else the piece
   // keeps all its first labels.
-  std::map<std::pair<int, int>, const Label*> first_of;
+  std::map<std::pair<SeamId, int>, const Label*> first_of;
   for (const Label& l : d.labels)
     first_of[{l.seam, l.side}] = &l;
   std::vector<bool> take = changed;
@@ -378,13 +378,13 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
         break;
       }
       again[i] = *first;
-      again[i].text = texts.brief[l.seam][l.side];
+      again[i].text = texts.brief[l.seam.index()][l.side];
     }
   }
   std::vector<Label> labels;
   for (Label& l : d.labels)
     if (!take[l.piece]) {
-      l.text = texts.brief[l.seam][l.side];
+      l.text = texts.brief[l.seam.index()][l.side];
       labels.push_back(std::move(l));
     }
   for (Label& l : again)
@@ -433,7 +433,7 @@ void measure_label_room(const Draft& d, const unfold::Unfolding& u, LayoutResult
   for (const Label& label : d.labels) {
     if (!label.crowded && !label.over_fold) continue;
     ++without_room;
-    const SeamSide& side = d.seams[label.seam].sides[label.side];
+    const SeamSide& side = d.seams[label.seam.index()].sides[label.side];
     const ScaledPiece& piece = d.pieces[side.piece];
     const OutlineEdge& e = piece.outline_mm[side.loop][side.index];
     const double length = norm(e.b - e.a);
@@ -607,7 +607,7 @@ void emit_piece(const Draft& d, const DraftIndex& x, std::size_t p, const SheetF
     Path arrow{PathRole::Hint, {}, false, piece};
     for (Vec2 v : a.points_mm)
       arrow.points_mm.push_back(f(v));
-    arrow.tint = d.numbers[a.seam] - 1;
+    arrow.tint = d.numbers[a.seam.index()] - 1;
     sheet.paths.push_back(std::move(arrow));
   }
   for (int li : x.labels_of[p]) {
@@ -671,13 +671,13 @@ void total_stats(double printable_mm2, LayoutResult& r) {
 void note_dropped_tabs(const Draft& d, const LayoutOptions& o, LayoutResult& r) {
   if (d.tabs.dropped.empty()) return;
   int slits = 0;
-  for (int s : d.tabs.dropped)
-    slits += is_narrow_slit(d.pieces, d.seams[s], tab_options_in_use(o));
+  for (SeamId s : d.tabs.dropped)
+    slits += is_narrow_slit(d.pieces, d.seams[s.index()], tab_options_in_use(o));
   r.notes.push_back(
       std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
       (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") + ")");
-  for (int s : d.tabs.dropped)
-    r.dropped_tab_seams.push_back(d.numbers[s]);
+  for (SeamId s : d.tabs.dropped)
+    r.dropped_tab_seams.push_back(d.numbers[s.index()]);
 }
 
 // The sheets of a complete packing: pieces, assembly list, furniture, then the figures and notes.
@@ -703,8 +703,8 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
                r.sheet_stats[place.sheet]);
   }
   report(o, "sheets", piece_count, piece_count);
-  for (int s : d.tabs.dropped) {
-    const SeamSide& side = d.seams[s].sides[0];
+  for (SeamId s : d.tabs.dropped) {
+    const SeamSide& side = d.seams[s.index()].sides[0];
     if (side.piece >= 0) r.sheet_stats[k.packed.placements[side.piece].sheet].dropped_tabs += 1;
   }
   emit_assembly_blocks(k, paper_h, r.sheets);

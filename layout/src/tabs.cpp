@@ -126,7 +126,7 @@ class TabPlanner {
     }
     settled_[index] = 1;
     if (!tab) return false;
-    tab->seam = index;
+    tab->seam = SeamId{index};
     record(std::move(*tab));
     return true;
   }
@@ -148,8 +148,9 @@ class TabPlanner {
     return false;
   }
 
-  TabPlan take_plan(std::vector<int> dropped) {
-    plan_.dropped = std::move(dropped);
+  TabPlan take_plan(std::span<const int> dropped) {
+    for (int index : dropped)
+      plan_.dropped.push_back(SeamId{index});
     std::sort(plan_.dropped.begin(), plan_.dropped.end());
     return std::move(plan_);
   }
@@ -184,7 +185,7 @@ class TabPlanner {
 
   // The placed tab joins its piece's obstacles and the plan. place() and repair() both record here.
   void record(Tab tab) {
-    const int index = tab.seam;
+    const int index = tab.seam.value();
     const SeamSide& s = seams_[index].sides[tab.side];
     PieceState& ps = state_[s.piece];
     ps.tab_shapes.push_back(test_shape(tab.quad_mm));
@@ -293,7 +294,7 @@ class TabPlanner {
       Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
       const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
       if (actual < std::max(kKeptWidthShare * w, o_.min_width_mm - kTolerance)) continue;
-      if (fits(piece, test_shape(quad))) return Tab{-1, k, piece, std::move(quad), actual};
+      if (fits(piece, test_shape(quad))) return Tab{SeamId{}, k, piece, std::move(quad), actual};
     }
     return std::nullopt;
   }
@@ -388,7 +389,7 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
   std::vector<int> dropped;
   for (int index : blocked)
     if (!planner.repair(index)) dropped.push_back(index);
-  return planner.take_plan(std::move(dropped));
+  return planner.take_plan(dropped);
 }
 
 }  // namespace foldkit::layout

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "foldkit/layout/folds.hpp"
+#include "foldkit/layout/ids.hpp"
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/polygon.hpp"
 #include "foldkit/layout/tabs.hpp"
@@ -35,7 +36,7 @@ struct LabelOptions {
 /// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
 /// towards perp_ccw(dir); `box_mm` reaches from the descenders below the baseline to the cap height.
 struct Label {
-  int seam = -1;
+  SeamId seam;
   int side = 0;
   int piece = -1;
   std::string text;

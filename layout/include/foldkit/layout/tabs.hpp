@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/layout/ids.hpp"
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/polygon.hpp"
 
@@ -26,8 +27,8 @@ struct TabOptions {
 
 /// A placed tab, in its piece's frame (mm, y up).
 struct Tab {
-  int seam = -1;  ///< index into the seam list
-  int side = 0;   ///< which side of the seam carries it (Seam::sides[side])
+  SeamId seam;   ///< its seam
+  int side = 0;  ///< which side of the seam carries it (Seam::sides[side])
   int piece = -1;
   Polygon quad_mm;  ///< counter-clockwise: edge start, outer start, outer end, edge end
   double width_mm = 0;
@@ -35,7 +36,7 @@ struct Tab {
 
 struct TabPlan {
   std::vector<std::optional<Tab>> tab_of_seam;  ///< per seam, its tab or nullopt when dropped
-  std::vector<int> dropped;                     ///< seams without a tab
+  std::vector<SeamId> dropped;                  ///< seams without a tab, increasing
 };
 
 /// Tabs for `seams` (processed in the order of `order`, or seam order when empty).
