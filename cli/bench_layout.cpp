@@ -113,7 +113,7 @@ void run_layout_bench(const LayoutBenchArgs& a) {
       layout::LayoutOptions o;
       o.paper_mm = *paper;
       o.size_mm = size;
-      if (a.nest2d) o.packer = layout::PackEngine::Nest2d;
+      if (a.nest2d) o.pack.engine = layout::PackEngine::Nest2d;
       Row row = run_one(loaded.mesh, unfolded.unfolding, o);
       row.mesh = name;
       row.faces = loaded.mesh.num_faces();

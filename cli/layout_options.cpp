@@ -47,7 +47,7 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
   out.margin_mm = o.margin_mm;
   out.tabs = !o.no_tabs;
   out.split_oversized = !o.no_split;
-  out.tab_width_mm = o.tab_width_mm;
+  out.tab.width_mm = o.tab_width_mm;
   out.numbers = !o.no_numbers;
   out.arrows = o.arrows;
   out.hints = o.hints;
@@ -55,8 +55,8 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
   out.regmark.inset_mm = o.regmark_inset_mm;
   out.regmark.square_mm = o.regmark_square_mm;
   out.regmark.arm_mm = o.regmark_arm_mm;
-  out.spacing_mm = o.spacing_mm;
-  out.label_min_mm = o.label_min_mm;
+  out.pack.spacing_mm = o.spacing_mm;
+  out.label.min_mm = o.label_min_mm;
   return out;
 }
 

@@ -14,19 +14,19 @@ struct LayoutCliOptions {
   bool fit = false;
   std::string paper = "A4";
   bool landscape = false;
-  double margin_mm = 10;
-  double tab_width_mm = 5;
+  double margin_mm = layout::LayoutOptions{}.margin_mm;
+  double tab_width_mm = layout::TabOptions{}.width_mm;
   bool no_tabs = false;
   bool no_split = false;
   bool no_numbers = false;
   bool arrows = false;
   bool hints = false;
   bool regmarks = false;
-  double regmark_inset_mm = 10;
-  double regmark_square_mm = 5;
-  double regmark_arm_mm = 20;
-  double spacing_mm = 2;
-  double label_min_mm = 2;
+  double regmark_inset_mm = layout::RegMarkOptions{}.inset_mm;
+  double regmark_square_mm = layout::RegMarkOptions{}.square_mm;
+  double regmark_arm_mm = layout::RegMarkOptions{}.arm_mm;
+  double spacing_mm = layout::PackOptions{}.spacing_mm;
+  double label_min_mm = layout::LabelOptions{}.min_mm;
 };
 
 /// Adds --size, --fit, --paper, --landscape, --margin, --tab-width, --no-tabs, --no-numbers, --arrows,

@@ -51,7 +51,8 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
   // Bleed needs its share of the spacing between pieces.
   if (coloured)
-    layout_options.spacing_mm = std::max(layout_options.spacing_mm, layout::fill_spacing_mm(*fills));
+    layout_options.pack.spacing_mm =
+        std::max(layout_options.pack.spacing_mm, layout::fill_spacing_mm(*fills));
   const int pieces = run.unfolded.result.unfolding.piece_count;
   const std::string laying_out =
       "laying out " + std::to_string(pieces) + (pieces == 1 ? " piece: " : " pieces: ");

@@ -17,9 +17,10 @@ TEST(Arrows, BothArrowsOfASeamPointFromTheSameMeshVertexToTheSameOther) {
   std::vector<std::array<int, 2>> tail_vertex(seams.size(), {-1, -1});
   for (const Arrow& a : arrows) {
     const OutlineEdge& e =
-        pieces[a.piece].outline_mm[seams[a.seam].sides[a.side].loop][seams[a.seam].sides[a.side].index];
+        pieces[a.piece]
+            .outline_mm[seams[a.seam.index()].sides[a.side].loop][seams[a.seam.index()].sides[a.side].index];
     const int va = ex.mesh.faces[e.face][e.corner], vb = ex.mesh.faces[e.face][(e.corner + 1) % 3];
-    tail_vertex[a.seam][a.side] = norm(a.tail_mm - e.a) < norm(a.tail_mm - e.b) ? va : vb;
+    tail_vertex[a.seam.index()][a.side] = norm(a.tail_mm - e.a) < norm(a.tail_mm - e.b) ? va : vb;
     EXPECT_GT(cross(e.b - e.a, a.tip_mm - e.a), 0) << "arrows lie inside their piece";
   }
   for (std::size_t s = 0; s < seams.size(); ++s)

@@ -37,11 +37,11 @@ TEST(EdgeNumbers, BothSidesOfEverySeamAreLabelledLegiblyAndLabelsDoNotOverlap) {
     std::vector<int> sides(seams.size(), 0);
     int on_tabs = 0, crowded = 0;
     for (const Label& l : labels) {
-      EXPECT_EQ(l.text, number_text(numbers[l.seam]));
+      EXPECT_EQ(l.text, number_text(numbers[l.seam.index()]));
       EXPECT_GE(l.height_mm, o.min_mm - 1e-9);
       EXPECT_LE(l.height_mm, o.max_mm + 1e-9);
-      sides[l.seam] |= 1 << l.side;
-      const auto& tab = tabs.tab_of_seam[l.seam];
+      sides[l.seam.index()] |= 1 << l.side;
+      const auto& tab = tabs.tab_of_seam[l.seam.index()];
       if (l.on_tab) {
         ++on_tabs;
         ASSERT_TRUE(tab && tab->side == l.side) << "a label on a tab only where that side has the tab";
@@ -69,7 +69,7 @@ TEST(EdgeNumbers, ALabelInsideAPieceReadsAlongItsEdgeWithItsFootTowardsIt) {
       place_labels(pieces, seams, number_seams(pieces, seams), TabPlan{}, {}, {}, LabelOptions{});
   ASSERT_EQ(labels.size(), 6u);
   for (const Label& l : labels) {
-    const OutlineEdge& e = pieces[0].outline_mm[0][seams[l.seam].sides[l.side].index];
+    const OutlineEdge& e = pieces[0].outline_mm[0][seams[l.seam.index()].sides[l.side].index];
     const Vec2 along = normalized(e.b - e.a);
     EXPECT_NEAR(dot(l.dir, along), 1, 1e-9);
     // The foot is a small gap inside the edge.

@@ -62,7 +62,7 @@ Printed print(unfold::Mesh mesh, double size_mm, double dpi, const layout::FillO
   lo.numbers = false;
   // The part letter is printed over the texture on purpose; here only the texture is compared.
   lo.piece_letters = false;
-  lo.spacing_mm = layout::fill_spacing_mm(fill);
+  lo.pack.spacing_mm = layout::fill_spacing_mm(fill);
   out.unfolding = test::split_to_fit(out.mesh, out.unfolding, lo).unfolding;
   out.layout = layout::layout_sheets(out.unfolding, lo);
   layout::add_fills(out.layout, out.mesh, out.unfolding, fill);

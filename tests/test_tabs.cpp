@@ -48,7 +48,7 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     for (std::size_t s = 0; s < seams.size(); ++s) {
       const auto& tab = plan.tab_of_seam[s];
       const bool dropped =
-          std::find(plan.dropped.begin(), plan.dropped.end(), static_cast<int>(s)) != plan.dropped.end();
+          std::find(plan.dropped.begin(), plan.dropped.end(), SeamId{s}) != plan.dropped.end();
       ASSERT_NE(tab.has_value(), dropped);
       if (!tab) continue;
       ++placed;
@@ -64,8 +64,9 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     }
     // Dropping is the last resort: a seam between two pieces always finds room on one side; only the
     // narrow notches and slits inside one piece (the MST baseline makes some) can lack it.
-    for (int s : plan.dropped)
-      EXPECT_EQ(seams[s].sides[0].piece, seams[s].sides[1].piece) << name << ": seam " << s;
+    for (SeamId s : plan.dropped)
+      EXPECT_EQ(seams[s.index()].sides[0].piece, seams[s.index()].sides[1].piece)
+          << name << ": seam " << s.value();
     EXPECT_GT(placed, 0.8 * seams.size()) << name;
   }
 }
@@ -85,11 +86,91 @@ TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
   std::vector<int> tabs_on_edge(n, 0);
   for (const auto& tab : plan.tab_of_seam) {
     ASSERT_TRUE(tab.has_value());
-    tabs_on_edge[seams[tab->seam].sides[tab->side].index] += 1;
+    tabs_on_edge[seams[tab->seam.index()].sides[tab->side].index] += 1;
   }
   // Walking round the outline, an edge with a tab is followed by one without: three of each, alternating.
   for (std::size_t i = 0; i < n; ++i)
     EXPECT_NE(tabs_on_edge[i], tabs_on_edge[(i + 1) % n]) << "outline edges " << i << " and " << (i + 1) % n;
+}
+
+// Two 30 x 10 mm pieces zipped together along three seams: the bottom of `a` (edges 0, 1, 2, left to
+// right) is glued to the top of `b` (edges 4, 3, 2). sides[0] of every seam is on `a`, so a plan that
+// ignored alternation would put all three tabs there, side by side.
+struct Zipper {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+};
+
+Zipper two_pieces_zipped_along_three_seams() {
+  auto piece = [](int index, std::vector<Vec2> corners) {
+    ScaledPiece p;
+    p.index = index;
+    p.faces = {2 * index, 2 * index + 1};
+    p.triangles_mm = {Triangle2{Vec2{0, 0}, Vec2{30, 0}, Vec2{30, 10}},
+                      Triangle2{Vec2{0, 0}, Vec2{30, 10}, Vec2{0, 10}}};
+    OutlineLoop loop;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      loop.push_back({static_cast<int>(loop.size()), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
+    p.outline_mm = {loop};
+    p.area_mm2 = 300;
+    return p;
+  };
+  Zipper z;
+  z.pieces.push_back(piece(0, {{0, 0}, {10, 0}, {20, 0}, {30, 0}, {30, 10}, {0, 10}}));
+  z.pieces.push_back(piece(1, {{0, 0}, {30, 0}, {30, 10}, {20, 10}, {10, 10}, {0, 10}}));
+  for (int k = 0; k < 3; ++k) {
+    Seam seam;
+    seam.edge = k;
+    seam.sides = {SeamSide{0, 0, k}, SeamSide{1, 0, 4 - k}};
+    z.seams.push_back(seam);
+  }
+  return z;
+}
+
+TEST(Tabs, AlongAZipperBetweenTwoPiecesTheTabsChangeSidesFromSeamToSeam) {
+  const Zipper z = two_pieces_zipped_along_three_seams();
+  const TabPlan plan = plan_tabs(z.pieces, z.seams, TabOptions{});
+  ASSERT_TRUE(plan.dropped.empty());
+  std::vector<int> piece_of_tab;
+  for (const auto& tab : plan.tab_of_seam) {
+    ASSERT_TRUE(tab.has_value());
+    EXPECT_NEAR(tab->width_mm, 4.5, 1e-9) << "room for a full tab (45% of 10 mm) on either side";
+    piece_of_tab.push_back(tab->piece);
+  }
+  EXPECT_EQ(piece_of_tab, (std::vector<int>{0, 1, 0})) << "tab, no tab, tab along piece 0's edge";
+}
+
+TEST(Tabs, TheWidthsTriedNarrowFromTheEdgesShareDownToTheLeast) {
+  const TabOptions o;
+  const std::vector<double> on_long = tab_widths_to_try(100, o);
+  ASSERT_FALSE(on_long.empty());
+  EXPECT_DOUBLE_EQ(on_long.front(), o.width_mm);
+  EXPECT_DOUBLE_EQ(on_long.back(), o.min_width_mm);
+  for (std::size_t i = 1; i < on_long.size(); ++i)
+    EXPECT_LT(on_long[i], on_long[i - 1]);
+  EXPECT_DOUBLE_EQ(tab_widths_to_try(6, o).front(), o.width_per_length * 6) << "a short edge, a narrow tab";
+  EXPECT_EQ(tab_widths_to_try(1, o), std::vector<double>{o.min_width_mm}) << "never below the least width";
+}
+
+TEST(Tabs, ASeamWhoseSidesMeetAtANarrowMouthIsASlit) {
+  // A notch cut into a piece's outline: edge 1 runs into the tip at (5, 10), edge 2 back out.
+  auto notch = [](double mouth_mm) {
+    ScaledPiece p;
+    p.index = 0;
+    const std::vector<Vec2> corners = {
+        {0, 0}, {5 - 0.5 * mouth_mm, 0}, {5, 10}, {5 + 0.5 * mouth_mm, 0}, {10, 0}, {10, 20}, {0, 20}};
+    OutlineLoop loop;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
+    p.outline_mm = {loop};
+    return std::vector<ScaledPiece>{p};
+  };
+  Seam seam;
+  seam.sides = {SeamSide{0, 0, 1}, SeamSide{0, 0, 2}};
+  EXPECT_TRUE(is_narrow_slit(notch(1), seam, TabOptions{}));
+  EXPECT_FALSE(is_narrow_slit(notch(6), seam, TabOptions{})) << "a wide notch takes a tab";
+  seam.sides = {SeamSide{0, 0, 1}, SeamSide{0, 0, 4}};
+  EXPECT_FALSE(is_narrow_slit(notch(1), seam, TabOptions{})) << "sides that are not neighbours";
 }
 
 // The default unfolding (one search piece, split to fit A4 at 150 mm) leaves few seams without a tab.
@@ -108,20 +189,8 @@ TEST(Tabs, OnTheDefaultUnfoldingOfRealExamplesFewTabsAreDropped) {
     const auto seams = find_seams(split.unfolding, pieces);
     const TabPlan plan = plan_tabs(pieces, seams, TabOptions{});
     int slits = 0;
-    for (int s : plan.dropped) {
-      const SeamSide& a = seams[s].sides[0];
-      const SeamSide& b = seams[s].sides[1];
-      if (a.piece != b.piece || a.loop != b.loop) continue;
-      const OutlineLoop& loop = pieces[a.piece].outline_mm[a.loop];
-      const int n = static_cast<int>(loop.size());
-      const bool adjacent = (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
-      if (!adjacent) continue;
-      const OutlineEdge& first = (a.index + 1) % n == b.index ? loop[a.index] : loop[b.index];
-      const OutlineEdge& second = (a.index + 1) % n == b.index ? loop[b.index] : loop[a.index];
-      // first ends where second starts (the slit's tip): the gap between their far ends.
-      const double mouth = norm(first.a - second.b);
-      slits += mouth < TabOptions{}.min_width_mm + 0.5;
-    }
+    for (SeamId s : plan.dropped)
+      slits += is_narrow_slit(pieces, seams[s.index()], TabOptions{});
     const double all = static_cast<double>(plan.dropped.size()) / seams.size();
     const double others = static_cast<double>(plan.dropped.size() - slits) / seams.size();
     std::printf("%s: %zu seams, %zu dropped (%.1f%%), %d of them slits; others %.1f%%\n", name, seams.size(),

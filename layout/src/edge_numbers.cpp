@@ -16,6 +16,14 @@ namespace {
 constexpr double kGridCell_mm = 4;
 // Labels may sit on tabs or stick out of tiny faces: the grid covers that much around the piece.
 constexpr double kGridBorder_mm = 20;
+// Each smaller label size tried is this share of the previous one.
+constexpr double kShrinkStep = 0.85;
+// How far a label may be lifted off its edge, in label heights: a small label (up to kSmallLabel times
+// the least size) a little farther, since it stays close to its edge in absolute terms.
+constexpr double kSmallLabel = 1.2;
+constexpr double kHighestLiftSmall = 1.5, kHighestLift = 0.9;
+// The lifts tried between the edge and the highest, in label heights.
+constexpr double kMiddleLift = 0.4;
 
 Box2 piece_region(const ScaledPiece& piece) {
   Box2 b;
@@ -58,6 +66,15 @@ double label_width_mm(const std::string& text, double height_mm, const LabelOpti
     }
   }
   return digits * options.char_width * height_mm;
+}
+
+double label_width_mm(const std::string& text, const std::string& hint, double height_mm,
+                      const LabelOptions& options) {
+  double w = label_width_mm(text, height_mm, options);
+  if (!hint.empty())
+    w += options.hint_gap_share * height_mm +
+         label_width_mm(hint, options.hint_height_share * height_mm, options);
+  return w;
 }
 
 double label_descent_mm(const std::string& text, double height_mm) {
@@ -259,16 +276,15 @@ class LabelPlacer {
   }
 
   double full_width(const SideTask& side, double h, const Form& f) const {
-    double w = label_width_mm(text_of(side, f), h, o_);
-    if (f.with_hint && !hint_of(side).empty()) w += 0.3 * h + label_width_mm(hint_of(side), 0.75 * h, o_);
-    return w;
+    static const std::string none;
+    return label_width_mm(text_of(side, f), f.with_hint ? hint_of(side) : none, h, o_);
   }
 
   // Largest first: a label as big as its edge allows is the easiest to find.
   std::vector<double> heights_down_to(const SideTask& side, double lowest) const {
     const double preferred = std::clamp(o_.per_length * side.length_mm, o_.min_mm, o_.max_mm);
     std::vector<double> heights;
-    for (double h = preferred; h > lowest + 1e-9; h *= 0.85)
+    for (double h = preferred; h > lowest + 1e-9; h *= kShrinkStep)
       heights.push_back(h);
     heights.push_back(lowest);
     return heights;
@@ -305,7 +321,7 @@ class LabelPlacer {
 
   Label make_label(const SideTask& side, Vec2 at, Vec2 dir, double h, const Form& f, bool on_tab) const {
     Label label;
-    label.seam = side.seam;
+    label.seam = SeamId{side.seam};
     label.side = side.side;
     label.piece = side.piece;
     label.text = text_of(side, f);
@@ -315,7 +331,8 @@ class LabelPlacer {
     label.on_tab = on_tab;
     if (f.with_hint) label.hint = hint_of(side);
     // The foot of the box is `at`; descenders ("p2") need room below the baseline.
-    const double descent = std::max(label_descent_mm(label.text, h), label_descent_mm(label.hint, 0.75 * h));
+    const double descent =
+        std::max(label_descent_mm(label.text, h), label_descent_mm(label.hint, o_.hint_height_share * h));
     label.at_mm = at + perp_ccw(dir) * descent;
     label.box_mm = label_box(at, dir, full_width(side, h, f), h + descent);
     return label;
@@ -349,8 +366,8 @@ class LabelPlacer {
     const double w = full_width(side, h, f);
     // Lifted off the edge by up to a label's height (a small one a little more): farther, it would not
     // read as the edge's.
-    const double highest = o_.gap_mm + (h <= 1.2 * o_.min_mm ? 1.5 : 0.9) * h;
-    for (double lift : {o_.gap_mm, o_.gap_mm + 0.4 * h, o_.gap_mm + 0.9 * h, highest})
+    const double highest = o_.gap_mm + (h <= kSmallLabel * o_.min_mm ? kHighestLiftSmall : kHighestLift) * h;
+    for (double lift : {o_.gap_mm, o_.gap_mm + kMiddleLift * h, o_.gap_mm + kHighestLift * h, highest})
       for (double t : kAlong) {
         const Vec2 at = e.a + dir * (t * side.length_mm - 0.5 * w) + up * lift;
         const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <span>
+#include <utility>
 
 namespace foldkit::layout {
 namespace {
@@ -38,63 +40,82 @@ Camera camera(Vec3 eye_direction) {
   return {right, cross(eye, right), eye};
 }
 
-// One view drawn into `cell` (sheet frame, y down).
-void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
-               const std::vector<std::string>& letter_of_tint, const View& view, Vec3 centre, double radius,
-               const Box2& cell, const GuideOptions& o, Sheet& sheet) {
-  const Camera cam = camera(view.eye);
-  const Vec3 light = normalized(cam.eye + cam.up * 0.6 + cam.right * 0.3);
-  sheet.texts.push_back(
-      Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
-  const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
-  const double scale = 0.5 * std::min(area.width(), area.height()) / radius;
-  const Vec2 mid = 0.5 * (area.min + area.max);
-  auto project = [&](Vec3 p) {
+// A view's projection: model points to the sheet (mm, y down), centred in `area`.
+struct Projection {
+  Camera cam;
+  Vec3 centre;
+  Vec2 mid;
+  double scale = 0;
+  Vec2 operator()(Vec3 p) const {
     const Vec3 d = p - centre;
     return Vec2{mid.x + scale * dot(d, cam.right), mid.y - scale * dot(d, cam.up)};
-  };
+  }
+};
+
+// Which part shows at each pixel of a view (kRaster x kRaster over the view's area, -1 for none).
+struct PartRaster {
+  Box2 area;
+  double px = 0;  // pixel size, mm
+  std::vector<int> owner = std::vector<int>(kRaster * kRaster, -1);
+  Vec2 centre_mm(int x, int y) const { return {area.min.x + (x + 0.5) * px, area.min.y + (y + 0.5) * px}; }
+};
+
+// Faces far to near along the view direction (painter's order).
+std::vector<int> far_to_near(const unfold::Mesh& mesh, const Projection& view) {
   const int n = mesh.num_faces();
   std::vector<double> depth(n);
   for (int f = 0; f < n; ++f) {
     const auto t = mesh.corners(f);
-    depth[f] = dot((t[0] + t[1] + t[2]) * (1.0 / 3) - centre, cam.eye);
+    depth[f] = dot((t[0] + t[1] + t[2]) * (1.0 / 3) - view.centre, view.cam.eye);
   }
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
+  return order;
+}
 
-  // Painted far to near; the raster keeps, per pixel, the part painted last.
-  std::vector<int> owner(kRaster * kRaster, -1);
-  const double px = std::max(area.width(), area.height()) / kRaster;
-  for (int f : order) {
+// Marks the pixels whose centres lie inside the projected triangle as `part`'s.
+void rasterize_triangle(std::span<const Vec2> p, int part, PartRaster& raster) {
+  const Box2 b = bounds_of(p);
+  const Box2& area = raster.area;
+  const int x0 = std::max(0, static_cast<int>((b.min.x - area.min.x) / raster.px));
+  const int x1 = std::min(kRaster - 1, static_cast<int>((b.max.x - area.min.x) / raster.px));
+  const int y0 = std::max(0, static_cast<int>((b.min.y - area.min.y) / raster.px));
+  const int y1 = std::min(kRaster - 1, static_cast<int>((b.max.y - area.min.y) / raster.px));
+  const double area2 = cross(p[1] - p[0], p[2] - p[0]);
+  for (int y = y0; y <= y1 && area2 != 0; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const Vec2 c = raster.centre_mm(x, y);
+      const double w0 = cross(p[1] - p[0], c - p[0]) / area2, w1 = cross(p[2] - p[1], c - p[1]) / area2,
+                   w2 = cross(p[0] - p[2], c - p[2]) / area2;
+      if (w0 >= 0 && w1 >= 0 && w2 >= 0) raster.owner[y * kRaster + x] = part;
+    }
+}
+
+// The faces painted far to near, shaded by a light above the viewer; the raster keeps, per pixel, the
+// part painted last.
+void paint_faces(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face, const Projection& view,
+                 PartRaster& raster, Sheet& sheet) {
+  const Vec3 light = normalized(view.cam.eye + view.cam.up * 0.6 + view.cam.right * 0.3);
+  for (int f : far_to_near(mesh, view)) {
     const auto t = mesh.corners(f);
     const Vec3 normal = cross(t[1] - t[0], t[2] - t[0]);
     const double len = norm(normal);
     if (!(len > 0)) continue;
-    const double facing = dot(normal, cam.eye) / len;
+    const double facing = dot(normal, view.cam.eye) / len;
     // Back faces show only through holes of open meshes: drawn dark, as an inside would look.
     const double shade = facing > 0 ? 0.45 + 0.55 * std::max(0.0, dot(normal, light) / len) : 0.3;
-    Path tri{PathRole::Piece, {project(t[0]), project(t[1]), project(t[2])}, true, -1, true, tint_of_face[f]};
+    Path tri{PathRole::Piece, {view(t[0]), view(t[1]), view(t[2])}, true, -1, true, tint_of_face[f]};
     tri.shade = shade;
-    // Rasterise for visibility: pixel centres inside the projected triangle.
-    const Box2 b = bounds_of(tri.points_mm);
-    const int x0 = std::max(0, static_cast<int>((b.min.x - area.min.x) / px));
-    const int x1 = std::min(kRaster - 1, static_cast<int>((b.max.x - area.min.x) / px));
-    const int y0 = std::max(0, static_cast<int>((b.min.y - area.min.y) / px));
-    const int y1 = std::min(kRaster - 1, static_cast<int>((b.max.y - area.min.y) / px));
-    const auto& p = tri.points_mm;
-    const double area2 = cross(p[1] - p[0], p[2] - p[0]);
-    for (int y = y0; y <= y1 && area2 != 0; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const Vec2 c{area.min.x + (x + 0.5) * px, area.min.y + (y + 0.5) * px};
-        const double w0 = cross(p[1] - p[0], c - p[0]) / area2, w1 = cross(p[2] - p[1], c - p[1]) / area2,
-                     w2 = cross(p[0] - p[2], c - p[2]) / area2;
-        if (w0 >= 0 && w1 >= 0 && w2 >= 0) owner[y * kRaster + x] = tint_of_face[f];
-      }
+    rasterize_triangle(tri.points_mm, tint_of_face[f], raster);
     sheet.paths.push_back(std::move(tri));
   }
+}
 
-  // Each visible part's letter at its visible pixel nearest the middle of what shows of it.
+// Each visible part's letter at its visible pixel nearest the middle of what shows of it.
+void letter_visible_parts(const PartRaster& raster, const std::vector<std::string>& letter_of_tint,
+                          const GuideOptions& o, Sheet& sheet) {
+  const std::vector<int>& owner = raster.owner;
   const int parts = static_cast<int>(letter_of_tint.size());
   std::vector<double> sx(parts, 0), sy(parts, 0);
   std::vector<int> count(parts, 0);
@@ -118,12 +139,28 @@ void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
         at = q;
       }
     }
-    const Vec2 centre_mm{area.min.x + (at.x + 0.5) * px, area.min.y + (at.y + 0.5) * px};
+    const Vec2 centre_mm = raster.centre_mm(static_cast<int>(at.x), static_cast<int>(at.y));
     const std::string& letter = letter_of_tint[part];
     const double w = 0.75 * o.letter_mm * static_cast<double>(letter.size());
     sheet.texts.push_back(
         Text{letter, centre_mm + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1});
   }
+}
+
+// One view drawn into `cell` (sheet frame, y down): its name, the shaded faces, the parts' letters.
+void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
+               const std::vector<std::string>& letter_of_tint, const View& view, Vec3 centre, double radius,
+               const Box2& cell, const GuideOptions& o, Sheet& sheet) {
+  sheet.texts.push_back(
+      Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
+  const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
+  const Projection projection{camera(view.eye), centre, 0.5 * (area.min + area.max),
+                              0.5 * std::min(area.width(), area.height()) / radius};
+  PartRaster raster;
+  raster.area = area;
+  raster.px = std::max(area.width(), area.height()) / kRaster;
+  paint_faces(mesh, tint_of_face, projection, raster, sheet);
+  letter_visible_parts(raster, letter_of_tint, o, sheet);
 }
 
 // "Glue order by part" lines: each part with the steps whose seams touch it, in letter order.
@@ -164,53 +201,63 @@ std::vector<std::string> order_by_part(const unfold::Unfolding& u, const LayoutR
   return lines;
 }
 
-}  // namespace
+// Tints by letter: part A gets palette colour 0, and so on.
+struct PartTints {
+  std::vector<int> tint_of_piece;
+  std::vector<std::string> letter_of_tint;
+  std::vector<int> tint_of_face;
+};
 
-Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutResult& r,
-                  const GuideOptions& o) {
-  Sheet sheet;
-  sheet.size_mm = o.paper_mm;
-  sheet.printable_mm =
-      Box2{{o.margin_mm, o.margin_mm}, {o.paper_mm.x - o.margin_mm, o.paper_mm.y - o.margin_mm}};
-  const Box2& area = sheet.printable_mm;
-
-  // Tints by letter: part A gets palette colour 0, and so on.
+PartTints part_tints(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutResult& r) {
   const int pieces = u.piece_count;
-  std::vector<int> tint_of_piece(pieces, 0);
-  std::vector<std::string> letter_of_tint(pieces);
+  PartTints t;
+  t.tint_of_piece.assign(pieces, 0);
+  t.letter_of_tint.resize(pieces);
   for (int p = 0; p < pieces; ++p) {
     const std::string letter = p < static_cast<int>(r.piece_letters.size()) ? r.piece_letters[p] : "?";
-    tint_of_piece[p] = std::clamp(letter_rank(letter), 0, pieces - 1);
-    letter_of_tint[tint_of_piece[p]] = letter;
+    t.tint_of_piece[p] = std::clamp(letter_rank(letter), 0, pieces - 1);
+    t.letter_of_tint[t.tint_of_piece[p]] = letter;
   }
-  std::vector<int> tint_of_face(mesh.num_faces(), 0);
+  t.tint_of_face.assign(mesh.num_faces(), 0);
   for (int f = 0; f < mesh.num_faces() && f < static_cast<int>(u.piece_of_face.size()); ++f)
-    tint_of_face[f] = tint_of_piece[u.piece_of_face[f]];
+    t.tint_of_face[f] = t.tint_of_piece[u.piece_of_face[f]];
+  return t;
+}
 
-  double y = area.min.y + kTitle_mm;
+// The title at the top; like every sheet, the guide says where it belongs and carries the scale check
+// (bottom margin).
+void add_title_and_foot(const GuideOptions& o, int pieces, std::size_t sheets, double y, Sheet& sheet) {
+  constexpr double kBar_mm = 50, kTick_mm = 1.2;
+  const Box2& area = sheet.printable_mm;
   const std::string title =
       (o.model_name.empty() ? std::string("Assembly guide") : o.model_name + ": assembly guide") + ", " +
-      std::to_string(pieces) + (pieces == 1 ? " part on " : " parts on ") + std::to_string(r.sheets.size()) +
-      (r.sheets.size() == 1 ? " sheet" : " sheets");
+      std::to_string(pieces) + (pieces == 1 ? " part on " : " parts on ") + std::to_string(sheets) +
+      (sheets == 1 ? " sheet" : " sheets");
   sheet.texts.push_back(Text{title, {area.min.x, y}, kTitle_mm, 0, PathRole::Sheet, -1});
-  // Like every sheet, the guide says where it belongs and carries the scale check (bottom margin).
   const double foot = o.paper_mm.y - 0.5 * o.margin_mm + 1;
-  const std::string n = std::to_string(r.sheets.size());
+  const std::string n = std::to_string(sheets);
   sheet.texts.push_back(
       Text{"guide, after sheet " + n + "/" + n, {area.min.x, foot}, kText_mm, 0, PathRole::Sheet, -1});
-  const Vec2 bar{area.max.x - 50, foot - 1};
-  sheet.paths.push_back(Path{PathRole::Sheet, {bar, bar + Vec2{50, 0}}, false, -1});
-  sheet.paths.push_back(Path{PathRole::Sheet, {bar + Vec2{0, -1.2}, bar + Vec2{0, 1.2}}, false, -1});
-  sheet.paths.push_back(Path{PathRole::Sheet, {bar + Vec2{50, -1.2}, bar + Vec2{50, 1.2}}, false, -1});
+  const Vec2 bar{area.max.x - kBar_mm, foot - 1};
+  sheet.paths.push_back(Path{PathRole::Sheet, {bar, bar + Vec2{kBar_mm, 0}}, false, -1});
+  sheet.paths.push_back(
+      Path{PathRole::Sheet, {bar + Vec2{0, -kTick_mm}, bar + Vec2{0, kTick_mm}}, false, -1});
+  sheet.paths.push_back(
+      Path{PathRole::Sheet, {bar + Vec2{kBar_mm, -kTick_mm}, bar + Vec2{kBar_mm, kTick_mm}}, false, -1});
   sheet.texts.push_back(Text{"50 mm", bar + Vec2{-12, 1}, kText_mm, 0, PathRole::Sheet, -1});
-  y += kLine_mm;
+}
+
+// The notes under the views: where each part is (letter and sheet), then the glue order by part.
+std::vector<std::string> guide_notes(const unfold::Unfolding& u, const LayoutResult& r, const PartTints& t) {
+  constexpr std::size_t kLineChars = 90;
+  const int pieces = u.piece_count;
   std::vector<std::string> notes{"Each part in its colour with its letter; where the parts are:"};
   std::string where;
-  for (int t = 0; t < pieces; ++t)
+  for (int tint = 0; tint < pieces; ++tint)
     for (int p = 0; p < pieces; ++p) {
-      if (tint_of_piece[p] != t || p >= static_cast<int>(r.placements.size())) continue;
-      const std::string entry = letter_of_tint[t] + " p" + std::to_string(r.placements[p].sheet + 1);
-      if (!where.empty() && where.size() + entry.size() > 90) {
+      if (t.tint_of_piece[p] != tint || p >= static_cast<int>(r.placements.size())) continue;
+      const std::string entry = t.letter_of_tint[tint] + " p" + std::to_string(r.placements[p].sheet + 1);
+      if (!where.empty() && where.size() + entry.size() > kLineChars) {
         notes.push_back(where);
         where.clear();
       }
@@ -218,19 +265,14 @@ Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const La
     }
   if (!where.empty()) notes.push_back(where);
   if (!r.assembly.empty()) {
-    const auto lines = order_by_part(u, r, letter_of_tint, tint_of_piece);
+    const auto lines = order_by_part(u, r, t.letter_of_tint, t.tint_of_piece);
     notes.insert(notes.end(), lines.begin(), lines.end());
   }
-  // The notes go at the bottom; the views share what is left in a 2 x 2 grid.
-  const double notes_top = area.max.y - kLine_mm * static_cast<double>(notes.size());
-  for (std::size_t i = 0; i < notes.size(); ++i)
-    sheet.texts.push_back(Text{notes[i],
-                               {area.min.x, notes_top + kLine_mm * (static_cast<double>(i) + 0.7)},
-                               kText_mm,
-                               0,
-                               PathRole::Sheet,
-                               -1});
+  return notes;
+}
 
+// The centre of the mesh's bounding box and the radius of the sphere about it that holds the mesh.
+std::pair<Vec3, double> bounding_sphere(const unfold::Mesh& mesh) {
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const Vec3& v : mesh.vertices) {
     lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
@@ -240,14 +282,40 @@ Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const La
   double radius = 0;
   for (const Vec3& v : mesh.vertices)
     radius = std::max(radius, norm(v - centre));
-  if (!(radius > 0) || mesh.num_faces() == 0) return sheet;
+  return {centre, radius};
+}
 
-  const double top = y + 2, gap = 4;
+}  // namespace
+
+Sheet guide_sheet(const unfold::Mesh& mesh, const unfold::Unfolding& u, const LayoutResult& r,
+                  const GuideOptions& o) {
+  Sheet sheet;
+  sheet.size_mm = o.paper_mm;
+  sheet.printable_mm =
+      Box2{{o.margin_mm, o.margin_mm}, {o.paper_mm.x - o.margin_mm, o.paper_mm.y - o.margin_mm}};
+  const Box2& area = sheet.printable_mm;
+  const PartTints tints = part_tints(mesh, u, r);
+  const double title_y = area.min.y + kTitle_mm;
+  add_title_and_foot(o, u.piece_count, r.sheets.size(), title_y, sheet);
+  // The notes go at the bottom; the views share what is left in a 2 x 2 grid.
+  const std::vector<std::string> notes = guide_notes(u, r, tints);
+  const double notes_top = area.max.y - kLine_mm * static_cast<double>(notes.size());
+  for (std::size_t i = 0; i < notes.size(); ++i)
+    sheet.texts.push_back(Text{notes[i],
+                               {area.min.x, notes_top + kLine_mm * (static_cast<double>(i) + 0.7)},
+                               kText_mm,
+                               0,
+                               PathRole::Sheet,
+                               -1});
+
+  const auto [centre, radius] = bounding_sphere(mesh);
+  if (!(radius > 0) || mesh.num_faces() == 0) return sheet;
+  const double top = title_y + kLine_mm + 2, gap = 4;
   const double cell_w = 0.5 * (area.width() - gap), cell_h = 0.5 * (notes_top - top - 2 * gap);
   for (std::size_t v = 0; v < kViews.size(); ++v) {
     const double cx = area.min.x + static_cast<double>(v % 2) * (cell_w + gap);
     const double cy = top + static_cast<double>(v / 2) * (cell_h + gap);
-    draw_view(mesh, tint_of_face, letter_of_tint, kViews[v], centre, radius,
+    draw_view(mesh, tints.tint_of_face, tints.letter_of_tint, kViews[v], centre, radius,
               Box2{{cx, cy}, {cx + cell_w, cy + cell_h}}, o, sheet);
   }
   return sheet;

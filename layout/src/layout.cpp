@@ -36,14 +36,28 @@ void validate(const LayoutOptions& o) {
   if (!positive(o.paper_mm.x) || !positive(o.paper_mm.y)) throw LayoutError("paper size must be positive");
   if (!(std::isfinite(o.margin_mm) && o.margin_mm >= 0)) throw LayoutError("margin must be zero or positive");
   if (o.size_mm && !positive(*o.size_mm)) throw LayoutError("--size must be positive");
-  if (o.tabs && (!positive(o.tab_width_mm) || !positive(o.min_tab_width_mm)))
+  if (o.tabs && (!positive(o.tab.width_mm) || !positive(o.tab.min_width_mm)))
     throw LayoutError("tab width must be positive");
-  if (!positive(o.label_min_mm) || o.label_max_mm < o.label_min_mm) throw LayoutError("bad label sizes");
-  if (!(o.spacing_mm >= 0) || !positive(o.pack_cell_mm)) throw LayoutError("bad packing spacing");
+  if (!positive(o.label.min_mm) || o.label.max_mm < o.label.min_mm) throw LayoutError("bad label sizes");
+  if (!(o.pack.spacing_mm >= 0) || !positive(o.pack.cell_mm)) throw LayoutError("bad packing spacing");
   const Box2 area = printable_area(o);
   if (area.empty() || area.width() < 10 || area.height() < 10)
     throw LayoutError("the margins leave no printable area on a " + format_mm(o.paper_mm.x) + "x" +
                       format_mm(o.paper_mm.y) + " mm sheet");
+}
+
+// The tab options as planned: the least width never above the width asked.
+TabOptions tab_options_in_use(const LayoutOptions& o) {
+  TabOptions t = o.tab;
+  t.min_width_mm = std::min(t.min_width_mm, t.width_mm);
+  return t;
+}
+
+// The label options as placed: arrows sit along the edges, so the labels are lifted above them.
+LabelOptions label_options_in_use(const LayoutOptions& o) {
+  LabelOptions l = o.label;
+  if (o.arrows) l.gap_mm = kArrowLabelGap_mm;
+  return l;
 }
 
 void report(const LayoutOptions& o, const char* stage, long done, long total) {
@@ -53,6 +67,11 @@ void report(const LayoutOptions& o, const char* stage, long done, long total) {
 // Sheet frame (y down, from the top-left) <-> packing frame (y up, from the bottom-left).
 Box2 flip_box(const Box2& b, double paper_h) {
   return Box2{{b.min.x, paper_h - b.max.y}, {b.max.x, paper_h - b.min.y}};
+}
+
+// The printable area in the packing frame (y up): what the pieces are packed into and measured against.
+Box2 packing_area(const LayoutOptions& o) {
+  return flip_box(printable_area(o), o.paper_mm.y);
 }
 
 // Everything drawn for one piece, in the piece's frame (mm, y up), before packing.
@@ -107,9 +126,8 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   d.numbers = number_seams(d.pieces, d.seams);
   if (o.hints) d.order = assembly_order(seam_loops(d.pieces, d.seams), d.seams);
   report(o, "drawing", 2, kSteps);
-  FoldOptions fold_options{o.flat_fold_rad, o.fold_inset_mm};
   for (const ScaledPiece& p : d.pieces)
-    d.folds.push_back(fold_lines(u, p, fold_options));
+    d.folds.push_back(fold_lines(u, p, o.fold));
   report(o, "drawing", 3, kSteps);
 
   // Tabs in number order: numbers follow the outlines, so alternation works along each outline.
@@ -117,10 +135,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   std::iota(by_number.begin(), by_number.end(), 0);
   std::sort(by_number.begin(), by_number.end(), [&](int a, int b) { return d.numbers[a] < d.numbers[b]; });
   if (o.tabs) {
-    TabOptions tab_options;
-    tab_options.width_mm = o.tab_width_mm;
-    tab_options.min_width_mm = std::min(o.min_tab_width_mm, o.tab_width_mm);
-    d.tabs = plan_tabs(d.pieces, d.seams, tab_options, by_number);
+    d.tabs = plan_tabs(d.pieces, d.seams, tab_options_in_use(o), by_number);
   } else {
     d.tabs.tab_of_seam.resize(d.seams.size());
   }
@@ -134,7 +149,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   taken.resize(d.pieces.size());
   if (o.piece_letters) {
     PieceLetterOptions letter_options;
-    letter_options.min_mm = o.label_min_mm;
+    letter_options.min_mm = o.label.min_mm;
     d.piece_letters = place_piece_letters(d.pieces, d.folds, d.letters, letter_options);
     for (const PieceLetter& l : d.piece_letters)
       taken[l.piece].push_back(l.footprint_mm);
@@ -156,11 +171,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
         hint.push_back(')');
       }
     }
-    LabelOptions& label_options = d.label_options;
-    label_options.min_mm = o.label_min_mm;
-    label_options.max_mm = o.label_max_mm;
-    // Arrows sit along the edges: lift the labels above them.
-    if (o.arrows) label_options.gap_mm = 1.6;
+    d.label_options = label_options_in_use(o);
     // The sheets are not known yet: the labels are placed without the mate's sheet, and placed again
     // where packing puts a mate on another sheet (settle_labels).
     d.labels = place_draft_labels(d, seam_texts(d));
@@ -219,20 +230,16 @@ Text make_text(const std::string& s, Vec2 at, Vec2 dir, double h, PathRole role,
 // The texts of a label as printed: `text` (the number, with the mate's letter and sheet) and its hint,
 // centred in the box the label reserved, turned half a turn when the piece's rotation would put them
 // more than 90 degrees from upright. The box stays the same, so what it keeps clear of still holds.
-std::vector<Text> upright_label_texts(const Label& label, const std::string& text, const Rigid2& t,
-                                      double paper_h) {
-  const LabelOptions metrics;
+std::vector<Text> upright_label_texts(const Label& label, const std::string& text,
+                                      const LabelOptions& metrics, const Rigid2& t, double paper_h) {
   const double reserved = label.box_mm.size() >= 2 ? norm(label.box_mm[1] - label.box_mm[0]) : 0;
-  auto width_at = [&](double height) {
-    return label_width_mm(text, height, metrics) +
-           (label.hint.empty() ? 0 : 0.3 * height + label_width_mm(label.hint, 0.75 * height, metrics));
-  };
   // A mate on a sheet with more digits than reserved: shrink into the box rather than overflow it.
-  const double h =
-      std::min(label.height_mm, label.height_mm * reserved / std::max(width_at(label.height_mm), 1e-9));
-  const double hint_h = 0.75 * h, hint_gap = 0.3 * h;
+  const double h = std::min(label.height_mm,
+                            label.height_mm * reserved /
+                                std::max(label_width_mm(text, label.hint, label.height_mm, metrics), 1e-9));
+  const double hint_h = metrics.hint_height_share * h, hint_gap = metrics.hint_gap_share * h;
   const double text_w = label_width_mm(text, h, metrics);
-  const double total = width_at(h);
+  const double total = label_width_mm(text, label.hint, h, metrics);
   const Vec2 up = perp_ccw(label.dir);
   const Vec2 d = t.apply_dir(label.dir);
   // Page angle, clockwise positive (y down); upright means within [-90, 90) degrees: vertical text
@@ -269,19 +276,21 @@ Text letter_text(const PieceLetter& letter, const Rigid2& t, double paper_h) {
 }
 
 // The assembly-order list as text blocks (sheet frame is applied later), each at most `max_h` tall.
+constexpr double kListLine_mm = 3.6;  // line pitch of the list
+
 struct ListBlock {
   std::vector<std::string> lines;
   Vec2 size_mm;
 };
 
 std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
-  constexpr double kLine = 3.6, kColumn = 16;
+  constexpr double kColumn_mm = 16;
   std::vector<std::string> entries;
   for (std::size_t step = 0; step < d.order.size(); ++step)
     entries.push_back(std::to_string(step + 1) + ". " + std::to_string(d.numbers[d.order[step]]));
   std::vector<ListBlock> blocks;
-  const int columns = std::max(1, static_cast<int>((area_size.x - 4) / kColumn));
-  const int rows_max = std::max(4, static_cast<int>((area_size.y - 4) / kLine) - 2);
+  const int columns = std::max(1, static_cast<int>((area_size.x - 4) / kColumn_mm));
+  const int rows_max = std::max(4, static_cast<int>((area_size.y - 4) / kListLine_mm) - 2);
   std::size_t at = 0;
   while (at < entries.size()) {
     ListBlock block;
@@ -300,8 +309,8 @@ std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
       }
       block.lines.push_back(line);
     }
-    const double width = std::max(cols * kColumn, 60.0);
-    block.size_mm = {width, (rows + 1) * kLine + 1};
+    const double width = std::max(cols * kColumn_mm, 60.0);
+    block.size_mm = {width, (rows + 1) * kListLine_mm + 1};
     at += static_cast<std::size_t>(rows) * cols;
     blocks.push_back(std::move(block));
   }
@@ -341,13 +350,13 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
   std::vector<bool> changed(d.pieces.size(), false);
   bool any = false;
   for (const Label& l : d.labels)
-    if (l.text != texts.full[l.seam][l.side]) changed[l.piece] = any = true;
+    if (l.text != texts.full[l.seam.index()][l.side]) changed[l.piece] = any = true;
   if (!any) return;
   std::vector<Label> again = place_draft_labels(d, texts);
   // A new label that sticks out where packing kept no room gives way to the first label of its side
   // (packed, so inside the shape) when that one is clear of the piece's new labels; else the piece
   // keeps all its first labels.
-  std::map<std::pair<int, int>, const Label*> first_of;
+  std::map<std::pair<SeamId, int>, const Label*> first_of;
   for (const Label& l : d.labels)
     first_of[{l.seam, l.side}] = &l;
   std::vector<bool> take = changed;
@@ -369,13 +378,13 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
         break;
       }
       again[i] = *first;
-      again[i].text = texts.brief[l.seam][l.side];
+      again[i].text = texts.brief[l.seam.index()][l.side];
     }
   }
   std::vector<Label> labels;
   for (Label& l : d.labels)
     if (!take[l.piece]) {
-      l.text = texts.brief[l.seam][l.side];
+      l.text = texts.brief[l.seam.index()][l.side];
       labels.push_back(std::move(l));
     }
   for (Label& l : again)
@@ -415,22 +424,22 @@ double flat_face_height_mm(const ScaledPiece& piece, const OutlineEdge& e, std::
 // without room (a sliver face needs absurd sizes and should not decide the advice). Edges shorter than
 // a label is high do not count either: a 0.2 mm edge would ask for a model 30 times larger, and its
 // seam is found by its neighbours' numbers.
-void measure_label_room(const Draft& d, const unfold::Unfolding& u, const LayoutOptions& o, LayoutResult& r) {
+void measure_label_room(const Draft& d, const unfold::Unfolding& u, LayoutResult& r) {
   constexpr double kTolerated = 0.02;
-  const LabelOptions metrics;
+  const LabelOptions& metrics = d.label_options;  // as placed
   const std::vector<int> root = flat_face_roots(u);
   std::vector<double> factors;
   int without_room = 0;
   for (const Label& label : d.labels) {
     if (!label.crowded && !label.over_fold) continue;
     ++without_room;
-    const SeamSide& side = d.seams[label.seam].sides[label.side];
+    const SeamSide& side = d.seams[label.seam.index()].sides[label.side];
     const ScaledPiece& piece = d.pieces[side.piece];
     const OutlineEdge& e = piece.outline_mm[side.loop][side.index];
     const double length = norm(e.b - e.a);
-    if (!(length >= o.label_min_mm) || e.face < 0 || e.face >= u.num_faces()) continue;
+    if (!(length >= metrics.min_mm) || e.face < 0 || e.face >= u.num_faces()) continue;
     const double height = flat_face_height_mm(piece, e, root);
-    const double h = o.label_min_mm;
+    const double h = metrics.min_mm;
     const double width =
         norm(label.box_mm[1] - label.box_mm[0]) * h / label.height_mm + 2 * metrics.clearance_mm;
     const double lift = metrics.gap_mm + h + metrics.clearance_mm;
@@ -448,192 +457,200 @@ struct Attempt {
   bool complete = false;
 };
 
-Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
-              std::optional<int> max_sheets) {
-  Attempt attempt;
-  LayoutResult& r = attempt.result;
-  r.scale_mm_per_unit = scale;
-  r.size_mm = scale * u.model_extent;
-  const double paper_h = o.paper_mm.y;
-  const Box2 area_down = printable_area(o);
-  const Box2 area = flip_box(area_down, paper_h);
-  const Vec2 area_size{area.width(), area.height()};
-
-  Draft d = draw_pieces(u, o, scale);
-  if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
-    throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
-                      " pieces, before packing them");
-  std::vector<PackItem> items = pack_items_of(d, piece_room_mm(o));
-  const std::size_t piece_items = items.size();
+// What packing was given and what it made of it: the pieces (with their tabs) first, then the blocks of
+// the assembly list.
+struct Packing {
+  std::vector<PackItem> items;
+  std::size_t piece_items = 0;
   std::vector<ListBlock> blocks;
+  PackResult packed;
+};
+
+// The pack options in use: the stage's own (spacing, rotations, cell, engine) with where to pack.
+PackOptions pack_options_in_use(const LayoutOptions& o, const Box2& area, std::optional<int> max_sheets) {
+  PackOptions p = o.pack;
+  p.area_mm = area;
+  p.keep_out_mm.clear();
+  p.max_sheets = max_sheets;
+  p.deadline = o.deadline;
+  p.progress = nullptr;
+  if (o.progress) p.progress = [&o](long done, long total) { report(o, "packing", done, total); };
+  if (o.regmarks)
+    for (const Box2& b : regmark_keep_out(o.paper_mm, o.regmark))
+      p.keep_out_mm.push_back(flip_box(b, o.paper_mm.y));
+  return p;
+}
+
+// Packs the pieces with their tabs and, with hints, the assembly list's blocks (upright).
+Packing pack_draft(const Draft& d, const LayoutOptions& o, const Box2& area, std::optional<int> max_sheets) {
+  Packing k;
+  k.items = pack_items_of(d, piece_room_mm(o));
+  k.piece_items = k.items.size();
   if (o.hints) {
-    blocks = assembly_blocks(d, area_size);
-    for (const ListBlock& b : blocks) {
+    k.blocks = assembly_blocks(d, Vec2{area.width(), area.height()});
+    for (const ListBlock& b : k.blocks) {
       PackItem item;
       item.rotate = false;  // text reads upright
       item.shape_mm = {{{0, 0}, {b.size_mm.x, 0}, b.size_mm, {0, b.size_mm.y}}};
-      items.push_back(std::move(item));
+      k.items.push_back(std::move(item));
     }
   }
+  k.packed = pack_items(k.items, pack_options_in_use(o, area, max_sheets));
+  return k;
+}
 
-  PackOptions pack_options;
-  pack_options.area_mm = area;
-  pack_options.spacing_mm = o.spacing_mm;
-  pack_options.cell_mm = o.pack_cell_mm;
-  pack_options.rotations = o.rotations;
-  pack_options.engine = o.packer;
-  pack_options.max_sheets = max_sheets;
-  pack_options.deadline = o.deadline;
-  if (o.progress) pack_options.progress = [&o](long done, long total) { report(o, "packing", done, total); };
-  if (o.regmarks)
-    for (const Box2& b : regmark_keep_out(o.paper_mm, o.regmark))
-      pack_options.keep_out_mm.push_back(flip_box(b, paper_h));
-  PackResult packed = pack_items(items, pack_options);
-  if (!packed.unplaced.empty()) {
-    attempt.complete = false;
-    if (!max_sheets) {
-      const double largest = largest_fitting_size(u, o);
-      throw LayoutError("piece " + std::to_string(packed.unplaced.front() + 1) + " does not fit the " +
-                        format_mm(area_size.x) + "x" + format_mm(area_size.y) +
-                        " mm printable area at --size " + format_mm(r.size_mm) +
-                        "mm; the largest --size that fits is " +
-                        format_mm(std::floor(std::min(largest, r.size_mm * 0.99))) + "mm");
-    }
-    return attempt;
-  }
-  attempt.complete = true;
-  r.paper_height_mm = paper_h;
-  report(o, "labelling", 0, 1);
-  settle_labels(d, o, items, packed);
-  report(o, "labelling", 1, 1);
-  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
-    const PackPlacement& place = packed.placements[p];
-    r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});
-  }
+// The refusal when a piece fits no sheet at the asked size, naming the largest size that fits.
+LayoutError piece_too_large(const unfold::Unfolding& u, const LayoutOptions& o, int piece, double size_mm) {
+  const Box2 area = packing_area(o);
+  const double largest = largest_fitting_size(u, o);
+  return LayoutError("piece " + std::to_string(piece + 1) + " does not fit the " + format_mm(area.width()) +
+                     "x" + format_mm(area.height()) + " mm printable area at --size " + format_mm(size_mm) +
+                     "mm; the largest --size that fits is " +
+                     format_mm(std::floor(std::min(largest, size_mm * 0.99))) + "mm");
+}
 
-  r.sheets.resize(packed.sheet_count);
-  r.sheet_stats.resize(packed.sheet_count);
-  for (Sheet& s : r.sheets) {
+std::vector<Sheet> blank_sheets(const LayoutOptions& o, int count) {
+  std::vector<Sheet> sheets(static_cast<std::size_t>(count));
+  for (Sheet& s : sheets) {
     s.size_mm = o.paper_mm;
-    s.printable_mm = area_down;
+    s.printable_mm = printable_area(o);
     if (o.regmarks) {
       auto marks = regmark_paths(o.paper_mm, o.regmark);
       s.paths.insert(s.paths.end(), marks.begin(), marks.end());
     }
   }
+  return sheets;
+}
 
-  // Tab corners spliced into the outlines: the cutter follows the tab instead of the edge.
-  std::vector<std::vector<std::vector<const Tab*>>> tab_at(d.pieces.size());
+// Where one piece goes on its sheet: the packing's motion, then the flip to the sheet's y-down frame.
+struct SheetFrame {
+  const Rigid2& t;
+  double paper_h = 0;
+  Vec2 operator()(Vec2 p) const { return to_sheet(p, t, paper_h); }
+};
+
+// What the draft keeps per seam, looked up per piece and outline edge when the sheets are emitted.
+struct DraftIndex {
+  std::vector<std::vector<std::vector<const Tab*>>> tab_at;  // per piece, loop, outline index
+  std::vector<std::vector<const Tab*>> tabs_of;              // per piece
+  std::vector<std::vector<int>> labels_of;                   // per piece: indices into Draft::labels
+};
+
+DraftIndex index_draft(const Draft& d) {
+  DraftIndex x;
+  x.tab_at.resize(d.pieces.size());
   for (std::size_t p = 0; p < d.pieces.size(); ++p)
     for (const OutlineLoop& loop : d.pieces[p].outline_mm)
-      tab_at[p].emplace_back(loop.size(), nullptr);
+      x.tab_at[p].emplace_back(loop.size(), nullptr);
   for (std::size_t s = 0; s < d.seams.size(); ++s)
     if (const auto& tab = d.tabs.tab_of_seam[s]) {
       const SeamSide& side = d.seams[s].sides[tab->side];
-      tab_at[side.piece][side.loop][side.index] = &*tab;
+      x.tab_at[side.piece][side.loop][side.index] = &*tab;
     }
-
   // Labels by piece: emitting them piece by piece must not scan every label for every piece.
-  std::vector<std::vector<int>> labels_of(d.pieces.size());
+  x.labels_of.resize(d.pieces.size());
   for (std::size_t i = 0; i < d.labels.size(); ++i)
-    labels_of[d.labels[i].piece].push_back(static_cast<int>(i));
-  std::vector<std::vector<const Tab*>> tabs_of(d.pieces.size());
+    x.labels_of[d.labels[i].piece].push_back(static_cast<int>(i));
+  x.tabs_of.resize(d.pieces.size());
   for (const auto& tab : d.tabs.tab_of_seam)
-    if (tab) tabs_of[tab->piece].push_back(&*tab);
-  const long piece_count = static_cast<long>(d.pieces.size());
-  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
-    report(o, "sheets", static_cast<long>(p), piece_count);
-    const PackPlacement& place = packed.placements[p];
-    Sheet& sheet = r.sheets[place.sheet];
-    SheetStats& st = r.sheet_stats[place.sheet];
-    const Rigid2& t = place.transform;
-    const int piece = static_cast<int>(p);
-    st.pieces += 1;
-    st.piece_area_mm2 += d.pieces[p].area_mm2;
-    for (std::size_t l = 0; l < d.pieces[p].outline_mm.size(); ++l) {
-      Path cut{PathRole::Cut, {}, true, piece};
-      const OutlineLoop& loop = d.pieces[p].outline_mm[l];
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        cut.points_mm.push_back(to_sheet(loop[i].a, t, paper_h));
-        if (const Tab* tab = tab_at[p][l][i]) {
-          // A tab may cover only part of its edge: then the cut runs along the edge to the tab first.
-          if (norm(tab->quad_mm[0] - loop[i].a) > 1e-9)
-            cut.points_mm.push_back(to_sheet(tab->quad_mm[0], t, paper_h));
-          cut.points_mm.push_back(to_sheet(tab->quad_mm[1], t, paper_h));
-          cut.points_mm.push_back(to_sheet(tab->quad_mm[2], t, paper_h));
-          if (norm(tab->quad_mm[3] - loop[i].b) > 1e-9)
-            cut.points_mm.push_back(to_sheet(tab->quad_mm[3], t, paper_h));
-        }
+    if (tab) x.tabs_of[tab->piece].push_back(&*tab);
+  return x;
+}
+
+// The piece's outline loops as cut paths, with the tab corners spliced in: the cutter follows the tab
+// instead of the edge.
+void emit_cuts(const ScaledPiece& scaled, int piece, const std::vector<std::vector<const Tab*>>& tab_at,
+               const SheetFrame& f, Sheet& sheet) {
+  for (std::size_t l = 0; l < scaled.outline_mm.size(); ++l) {
+    Path cut{PathRole::Cut, {}, true, piece};
+    const OutlineLoop& loop = scaled.outline_mm[l];
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      cut.points_mm.push_back(f(loop[i].a));
+      if (const Tab* tab = tab_at[l][i]) {
+        // A tab may cover only part of its edge: then the cut runs along the edge to the tab first.
+        if (norm(tab->quad_mm[0] - loop[i].a) > 1e-9) cut.points_mm.push_back(f(tab->quad_mm[0]));
+        cut.points_mm.push_back(f(tab->quad_mm[1]));
+        cut.points_mm.push_back(f(tab->quad_mm[2]));
+        if (norm(tab->quad_mm[3] - loop[i].b) > 1e-9) cut.points_mm.push_back(f(tab->quad_mm[3]));
       }
-      sheet.paths.push_back(std::move(cut));
     }
-    for (const FoldLine& f : d.folds[p])
-      sheet.paths.push_back({f.role, {to_sheet(f.a, t, paper_h), to_sheet(f.b, t, paper_h)}, false, piece});
-    for (const Tab* tab : tabs_of[p]) {
-      Path area{PathRole::Tab, {}, true, piece};
-      for (Vec2 v : tab->quad_mm)
-        area.points_mm.push_back(to_sheet(v, t, paper_h));
-      sheet.paths.push_back(std::move(area));
-      // The tab folds away from the printed side, behind its partner: a mountain fold seen from here.
-      sheet.paths.push_back({PathRole::Mountain,
-                             {to_sheet(tab->quad_mm[0], t, paper_h), to_sheet(tab->quad_mm[3], t, paper_h)},
-                             false,
-                             piece});
-      st.tabs += 1;
-      st.tab_area_mm2 += signed_area(tab->quad_mm);
-    }
-    for (const Arrow& a : d.arrows) {
-      if (a.piece != piece) continue;
-      Path arrow{PathRole::Hint, {}, false, piece};
-      for (Vec2 v : a.points_mm)
-        arrow.points_mm.push_back(to_sheet(v, t, paper_h));
-      arrow.tint = d.numbers[a.seam] - 1;
-      sheet.paths.push_back(std::move(arrow));
-    }
-    for (int li : labels_of[p]) {
-      const Label& label = d.labels[li];
-      for (Text& out : upright_label_texts(label, label.text, t, paper_h))
-        sheet.texts.push_back(std::move(out));
-      st.labels += 1;
-      st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);
-    }
-    if (p < d.piece_letters.size()) sheet.texts.push_back(letter_text(d.piece_letters[p], t, paper_h));
+    sheet.paths.push_back(std::move(cut));
   }
-  report(o, "sheets", piece_count, piece_count);
-  for (int s : d.tabs.dropped) {
-    const SeamSide& side = d.seams[s].sides[0];
-    if (side.piece >= 0) r.sheet_stats[packed.placements[side.piece].sheet].dropped_tabs += 1;
-  }
+}
 
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const PackPlacement& place = packed.placements[piece_items + b];
-    Sheet& sheet = r.sheets[place.sheet];
-    const ListBlock& block = blocks[b];
-    // Lines top-down inside the block's own frame (y up): the first line at the top.
+void emit_tabs(std::span<const Tab* const> tabs, int piece, const SheetFrame& f, Sheet& sheet,
+               SheetStats& st) {
+  for (const Tab* tab : tabs) {
+    Path area{PathRole::Tab, {}, true, piece};
+    for (Vec2 v : tab->quad_mm)
+      area.points_mm.push_back(f(v));
+    sheet.paths.push_back(std::move(area));
+    // The tab folds away from the printed side, behind its partner: a mountain fold seen from here.
+    sheet.paths.push_back({PathRole::Mountain, {f(tab->quad_mm[0]), f(tab->quad_mm[3])}, false, piece});
+    st.tabs += 1;
+    st.tab_area_mm2 += signed_area(tab->quad_mm);
+  }
+}
+
+// Everything one piece prints, in drawing order: its cuts, folds, tabs, arrows, labels and letter.
+void emit_piece(const Draft& d, const DraftIndex& x, std::size_t p, const SheetFrame& f, Sheet& sheet,
+                SheetStats& st) {
+  const int piece = static_cast<int>(p);
+  st.pieces += 1;
+  st.piece_area_mm2 += d.pieces[p].area_mm2;
+  emit_cuts(d.pieces[p], piece, x.tab_at[p], f, sheet);
+  for (const FoldLine& fold : d.folds[p])
+    sheet.paths.push_back({fold.role, {f(fold.a), f(fold.b)}, false, piece});
+  emit_tabs(x.tabs_of[p], piece, f, sheet, st);
+  for (const Arrow& a : d.arrows) {
+    if (a.piece != piece) continue;
+    Path arrow{PathRole::Hint, {}, false, piece};
+    for (Vec2 v : a.points_mm)
+      arrow.points_mm.push_back(f(v));
+    arrow.tint = d.numbers[a.seam.index()] - 1;
+    sheet.paths.push_back(std::move(arrow));
+  }
+  for (int li : x.labels_of[p]) {
+    const Label& label = d.labels[li];
+    for (Text& out : upright_label_texts(label, label.text, d.label_options, f.t, f.paper_h))
+      sheet.texts.push_back(std::move(out));
+    st.labels += 1;
+    st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);
+  }
+  if (p < d.piece_letters.size()) sheet.texts.push_back(letter_text(d.piece_letters[p], f.t, f.paper_h));
+}
+
+// The assembly list's blocks where packing put them; lines top-down inside each block's own frame (y up).
+void emit_assembly_blocks(const Packing& k, double paper_h, std::vector<Sheet>& sheets) {
+  constexpr double kText_mm = 2.4, kIndent_mm = 1;
+  for (std::size_t b = 0; b < k.blocks.size(); ++b) {
+    const PackPlacement& place = k.packed.placements[k.piece_items + b];
+    const ListBlock& block = k.blocks[b];
     for (std::size_t i = 0; i < block.lines.size(); ++i) {
-      const Vec2 at{1, block.size_mm.y - 3.6 * (static_cast<double>(i) + 1)};
-      sheet.texts.push_back(
-          make_text(block.lines[i], at, {1, 0}, 2.4, PathRole::Hint, -1, place.transform, paper_h));
+      const Vec2 at{kIndent_mm, block.size_mm.y - kListLine_mm * (static_cast<double>(i) + 1)};
+      sheets[place.sheet].texts.push_back(
+          make_text(block.lines[i], at, {1, 0}, kText_mm, PathRole::Hint, -1, place.transform, paper_h));
     }
   }
+}
 
-  if (o.furniture) {
-    FurnitureOptions furniture;
-    furniture.model_name = o.model_name;
-    furniture.spacing_mm = o.spacing_mm;
-    std::vector<Box2> keep_out;
-    if (o.regmarks) keep_out = regmark_keep_out(o.paper_mm, o.regmark);
-    const std::vector<int> crowded = add_sheet_furniture(r.sheets, keep_out, furniture);
-    if (!crowded.empty())
-      r.notes.push_back(
-          std::to_string(crowded.size()) +
-          " sheet(s) had no free corner for the 1 in scale square (the 50 mm bar is in the margin)");
-  }
+void emit_furniture(const LayoutOptions& o, LayoutResult& r) {
+  FurnitureOptions furniture;
+  furniture.model_name = o.model_name;
+  furniture.spacing_mm = o.pack.spacing_mm;
+  std::vector<Box2> keep_out;
+  if (o.regmarks) keep_out = regmark_keep_out(o.paper_mm, o.regmark);
+  const std::vector<int> crowded = add_sheet_furniture(r.sheets, keep_out, furniture);
+  if (!crowded.empty())
+    r.notes.push_back(
+        std::to_string(crowded.size()) +
+        " sheet(s) had no free corner for the 1 in scale square (the 50 mm bar is in the margin)");
+}
 
-  // Stats and notes.
-  const double printable = area.width() * area.height();
+// Each sheet's coverage, and the sums over all sheets.
+void total_stats(double printable_mm2, LayoutResult& r) {
   for (SheetStats& st : r.sheet_stats) {
-    st.coverage = (st.piece_area_mm2 + st.tab_area_mm2) / printable;
+    st.coverage = (st.piece_area_mm2 + st.tab_area_mm2) / printable_mm2;
     r.overall.pieces += st.pieces;
     r.overall.tabs += st.tabs;
     r.overall.dropped_tabs += st.dropped_tabs;
@@ -645,35 +662,57 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
           r.overall.min_label_mm == 0 ? st.min_label_mm : std::min(r.overall.min_label_mm, st.min_label_mm);
   }
   if (!r.sheets.empty())
-    r.overall.coverage = (r.overall.piece_area_mm2 + r.overall.tab_area_mm2) / (printable * r.sheets.size());
-  if (!d.tabs.dropped.empty()) {
-    std::string list;
-    for (int s : d.tabs.dropped)
-      list += (list.empty() ? "" : ", ") + std::to_string(d.numbers[s]);
-    // A slit: both sides meet at a vertex and their far ends are closer than a tab is wide. No tab fits
-    // there; the maker closes it edge to edge (tape behind).
-    int slits = 0;
-    for (int s : d.tabs.dropped) {
-      const SeamSide& a = d.seams[s].sides[0];
-      const SeamSide& b = d.seams[s].sides[1];
-      if (a.piece < 0 || a.piece != b.piece || a.loop != b.loop) continue;
-      const OutlineLoop& loop = d.pieces[a.piece].outline_mm[a.loop];
-      const int n = static_cast<int>(loop.size());
-      const bool a_first = (a.index + 1) % n == b.index;
-      if (!a_first && (b.index + 1) % n != a.index) continue;
-      const OutlineEdge& first = loop[a_first ? a.index : b.index];
-      const OutlineEdge& second = loop[a_first ? b.index : a.index];
-      slits += norm(first.a - second.b) < std::min(o.min_tab_width_mm, o.tab_width_mm) + 0.5;
-    }
-    // The seam numbers themselves go to dropped_tab_seams (JSON): a list of hundreds is no note.
-    r.notes.push_back(
-        std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
-        (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") +
-        ")");
-    for (int s : d.tabs.dropped)
-      r.dropped_tab_seams.push_back(d.numbers[s]);
+    r.overall.coverage =
+        (r.overall.piece_area_mm2 + r.overall.tab_area_mm2) / (printable_mm2 * r.sheets.size());
+}
+
+// The seams without a tab: a note with how many (and how many are slits: no tab fits there; the maker
+// closes them edge to edge, tape behind), and their printed numbers (JSON: a list of hundreds is no note).
+void note_dropped_tabs(const Draft& d, const LayoutOptions& o, LayoutResult& r) {
+  if (d.tabs.dropped.empty()) return;
+  int slits = 0;
+  for (SeamId s : d.tabs.dropped)
+    slits += is_narrow_slit(d.pieces, d.seams[s.index()], tab_options_in_use(o));
+  r.notes.push_back(
+      std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
+      (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") + ")");
+  for (SeamId s : d.tabs.dropped)
+    r.dropped_tab_seams.push_back(d.numbers[s.index()]);
+}
+
+// The sheets of a complete packing: pieces, assembly list, furniture, then the figures and notes.
+void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, const Packing& k,
+                 LayoutResult& r) {
+  const double paper_h = o.paper_mm.y;
+  r.paper_height_mm = paper_h;
+  report(o, "labelling", 0, 1);
+  settle_labels(d, o, k.items, k.packed);
+  report(o, "labelling", 1, 1);
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    const PackPlacement& place = k.packed.placements[p];
+    r.placements.push_back({place.sheet, place.transform.angle_rad, place.transform.offset_mm});
   }
-  measure_label_room(d, u, o, r);
+  r.sheets = blank_sheets(o, k.packed.sheet_count);
+  r.sheet_stats.resize(k.packed.sheet_count);
+  const DraftIndex x = index_draft(d);
+  const long piece_count = static_cast<long>(d.pieces.size());
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    report(o, "sheets", static_cast<long>(p), piece_count);
+    const PackPlacement& place = k.packed.placements[p];
+    emit_piece(d, x, p, SheetFrame{place.transform, paper_h}, r.sheets[place.sheet],
+               r.sheet_stats[place.sheet]);
+  }
+  report(o, "sheets", piece_count, piece_count);
+  for (SeamId s : d.tabs.dropped) {
+    const SeamSide& side = d.seams[s.index()].sides[0];
+    if (side.piece >= 0) r.sheet_stats[k.packed.placements[side.piece].sheet].dropped_tabs += 1;
+  }
+  emit_assembly_blocks(k, paper_h, r.sheets);
+  if (o.furniture) emit_furniture(o, r);
+  const Box2 area = packing_area(o);
+  total_stats(area.width() * area.height(), r);
+  note_dropped_tabs(d, o, r);
+  measure_label_room(d, u, r);
   r.piece_letters = d.letters;
   for (const Sheet& sheet : r.sheets)
     r.label_audit += audit_labels(sheet);
@@ -684,6 +723,27 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     const int s = d.order[step];
     r.assembly.push_back({static_cast<int>(step) + 1, d.numbers[s], d.seams[s].fold_angle_rad});
   }
+}
+
+// One layout at `scale`: drawn, packed (on at most max_sheets when set) and emitted. Incomplete when
+// pieces are left over with max_sheets; without it, a piece that fits no sheet is a LayoutError.
+Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
+              std::optional<int> max_sheets) {
+  Attempt attempt;
+  LayoutResult& r = attempt.result;
+  r.scale_mm_per_unit = scale;
+  r.size_mm = scale * u.model_extent;
+  Draft d = draw_pieces(u, o, scale);
+  if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
+    throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
+                      " pieces, before packing them");
+  const Packing k = pack_draft(d, o, packing_area(o), max_sheets);
+  if (!k.packed.unplaced.empty()) {
+    if (!max_sheets) throw piece_too_large(u, o, k.packed.unplaced.front(), r.size_mm);
+    return attempt;
+  }
+  attempt.complete = true;
+  emit_sheets(u, o, d, k, r);
   return attempt;
 }
 
@@ -708,7 +768,7 @@ Box2 printable_area(const LayoutOptions& o) {
 
 Vec2 piece_room_mm(const LayoutOptions& o) {
   const Box2 area = printable_area(o);
-  const double border = (o.tabs ? o.tab_width_mm : 0) + o.spacing_mm + 2 * o.pack_cell_mm;
+  const double border = (o.tabs ? o.tab.width_mm : 0) + o.pack.spacing_mm + 2 * o.pack.cell_mm;
   Vec2 room{area.width() - 2 * border, area.height() - 2 * border};
   if (o.regmarks) {
     // The marks' keep-out zones take corners of the area: the band between them across the longer
@@ -720,7 +780,7 @@ Vec2 piece_room_mm(const LayoutOptions& o) {
       if (z.min.x <= area.min.x) left = std::max(left, z.max.x - area.min.x);
       if (z.max.x >= area.max.x) right = std::max(right, area.max.x - z.min.x);
     }
-    const double spacing = o.spacing_mm;
+    const double spacing = o.pack.spacing_mm;
     if (area.height() >= area.width()) {
       room.y = area.height() - top - bottom - 2 * spacing - 2 * border;
     } else {

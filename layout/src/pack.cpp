@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -280,135 +281,188 @@ int shaken_orders(std::size_t items, int most) {
   return std::clamp(static_cast<int>(kItemRuns / static_cast<double>(items)), std::min(most, 4), most);
 }
 
-}  // namespace
+// The packing grid: cells of cell_mm over the area grown by half a gap on every side (an item's grown
+// shape may use that margin, the item may not).
+struct PackGrid {
+  double cell = 0, half_gap = 0;
+  double grow = 0;  // how far item shapes are grown before rasterising
+  Vec2 min;         // sheet-frame corner of cell (0, 0)
+  int nx = 0, ny = 0;
+};
 
-PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
-  if (options.engine == PackEngine::Nest2d) return pack_items_nest2d(items, options);
-  const double cell = options.cell_mm;
-  const double half_gap = 0.5 * options.spacing_mm;
-  // The grid reaches half a gap beyond the area: an item's grown shape may use it, the item may not.
-  const Vec2 grid_min = options.area_mm.min - Vec2{half_gap, half_gap};
-  const double cells_x = std::floor((options.area_mm.width() + 2 * half_gap) / cell);
-  const double cells_y = std::floor((options.area_mm.height() + 2 * half_gap) / cell);
+PackGrid pack_grid(const PackOptions& options) {
+  PackGrid g;
+  g.cell = options.cell_mm;
+  g.half_gap = 0.5 * options.spacing_mm;
+  g.min = options.area_mm.min - Vec2{g.half_gap, g.half_gap};
+  const double cells_x = std::floor((options.area_mm.width() + 2 * g.half_gap) / g.cell);
+  const double cells_y = std::floor((options.area_mm.height() + 2 * g.half_gap) / g.cell);
   // Checked in floating point, before any cast or allocation (a 1e9 mm sheet was a 4e18-byte grid).
   if (!(cells_x * cells_y <= kMaxGridCells)) {
     char text[160];
     std::snprintf(text, sizeof text,
                   "the sheet is too large to pack: %gx%g mm in %g mm cells is over %g cells",
-                  options.area_mm.width(), options.area_mm.height(), cell, kMaxGridCells);
+                  options.area_mm.width(), options.area_mm.height(), g.cell, kMaxGridCells);
     throw LayoutError(text);
   }
-  const int nx = std::max(0, static_cast<int>(cells_x));
-  const int ny = std::max(0, static_cast<int>(cells_y));
-  const double grow = half_gap + cell * std::sqrt(0.5);
+  g.nx = std::max(0, static_cast<int>(cells_x));
+  g.ny = std::max(0, static_cast<int>(cells_y));
+  g.grow = g.half_gap + g.cell * std::sqrt(0.5);
+  return g;
+}
 
-  SheetGrid empty(nx, ny);
-  for (const Box2& box : options.keep_out_mm) {
-    const int x0 = static_cast<int>(std::floor((box.min.x - half_gap - grid_min.x) / cell));
-    const int x1 = static_cast<int>(std::ceil((box.max.x + half_gap - grid_min.x) / cell)) - 1;
-    const int y0 = static_cast<int>(std::floor((box.min.y - half_gap - grid_min.y) / cell));
-    const int y1 = static_cast<int>(std::ceil((box.max.y + half_gap - grid_min.y) / cell)) - 1;
+// A fresh sheet: every cell free except those within half a gap of a keep-out zone.
+SheetGrid blank_sheet(const PackGrid& g, std::span<const Box2> keep_out) {
+  SheetGrid sheet(g.nx, g.ny);
+  for (const Box2& box : keep_out) {
+    const int x0 = static_cast<int>(std::floor((box.min.x - g.half_gap - g.min.x) / g.cell));
+    const int x1 = static_cast<int>(std::ceil((box.max.x + g.half_gap - g.min.x) / g.cell)) - 1;
+    const int y0 = static_cast<int>(std::floor((box.min.y - g.half_gap - g.min.y) / g.cell));
+    const int y1 = static_cast<int>(std::ceil((box.max.y + g.half_gap - g.min.y) / g.cell)) - 1;
     for (int y = y0; y <= y1; ++y)
-      empty.take(y, x0, x1);
+      sheet.take(y, x0, x1);
   }
+  return sheet;
+}
 
-  std::vector<std::vector<Raster>> rasters(items.size());
-  std::vector<double> area(items.size()), longest(items.size()), girth(items.size());
+// Every item rasterised at each of its rotations, with the sizes the largest-first orders sort by.
+struct ItemRasters {
+  std::vector<std::vector<Raster>> rasters;
+  std::vector<double> area, longest, girth;
+};
+
+ItemRasters rasterize_items(std::span<const PackItem> items, int rotations, const PackGrid& g) {
+  ItemRasters r;
+  r.rasters.resize(items.size());
+  r.area.resize(items.size());
+  r.longest.resize(items.size());
+  r.girth.resize(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::vector<Polygon> grown = grow_shape(items[i].shape_mm, grow);
-    for (double angle : candidate_angles(items[i], options.rotations))
-      rasters[i].push_back(rasterize(grown, angle, cell, nx, ny));
-    area[i] = std::fabs(total_area(items[i].shape_mm));
+    const std::vector<Polygon> grown = grow_shape(items[i].shape_mm, g.grow);
+    for (double angle : candidate_angles(items[i], rotations))
+      r.rasters[i].push_back(rasterize(grown, angle, g.cell, g.nx, g.ny));
+    r.area[i] = std::fabs(total_area(items[i].shape_mm));
     Box2 box;
     for (const Polygon& p : items[i].shape_mm)
       box.add(bounds_of(p));
-    longest[i] = std::max(box.width(), box.height());
-    girth[i] = box.width() + box.height();
+    r.longest[i] = std::max(box.width(), box.height());
+    r.girth[i] = box.width() + box.height();
   }
+  return r;
+}
 
-  // Progress counts placements over every order tried: the three plain ones and the shaken ones.
-  const int shaken = shaken_orders(items.size(), options.shaken_orders);
-  const long most_placements = static_cast<long>(3 + shaken) * static_cast<long>(items.size());
-  long placements_done = 0;
+// Progress counts placements over every order tried: the three plain ones and the shaken ones.
+struct PlacementCount {
+  const PackOptions& options;
+  long most = 0;
+  long done = 0;
+  void placed() {
+    if (options.progress) options.progress(++done, most);
+  }
+};
 
-  // One greedy pass in a given order. Returns the result and how many rows the last sheet uses.
-  auto run = [&](const std::vector<int>& order) {
-    PackResult result;
-    result.placements.resize(items.size());
-    std::vector<SheetGrid> sheets;
-    int last_lowest = ny;
-    for (std::size_t placed = 0; placed < order.size(); ++placed) {
-      const int index = order[placed];
-      if (options.deadline && std::chrono::steady_clock::now() > *options.deadline)
-        throw LayoutError("stopped at the time limit while packing: " + std::to_string(placed) + " of " +
-                          std::to_string(order.size()) + " pieces placed");
-      Spot spot;
-      int sheet = 0;
-      for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
-        spot = find_spot(sheets[sheet], rasters[index]);
-        if (spot.raster) break;
-      }
-      if (!spot.raster && (!options.max_sheets || static_cast<int>(sheets.size()) < *options.max_sheets)) {
-        SheetGrid fresh = empty;
-        spot = find_spot(fresh, rasters[index]);
-        if (spot.raster) {
-          sheets.push_back(std::move(fresh));
-          last_lowest = ny;
-        }
-      }
-      if (!spot.raster) {
-        result.unplaced.push_back(index);
-        continue;
-      }
-      const Raster& r = *spot.raster;
-      for (int j = 0; j < r.height; ++j)
-        for (auto [i0, i1] : r.runs[j])
-          sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
-      if (sheet + 1 == static_cast<int>(sheets.size())) last_lowest = std::min(last_lowest, spot.y);
-      const Vec2 corner = grid_min + Vec2{cell * spot.x, cell * spot.y};
-      result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
-      if (options.progress) options.progress(++placements_done, most_placements);
+// One greedy pass: the result, and how many rows the last sheet uses.
+struct OrderRun {
+  PackResult result;
+  int last_rows = 0;
+};
+
+// The first open sheet with room takes the item at its best spot; a new sheet opens when none has
+// room (unless max_sheets are open).
+OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes, const PackGrid& g,
+                       const SheetGrid& blank, const PackOptions& options, PlacementCount& count) {
+  OrderRun run;
+  PackResult& result = run.result;
+  result.placements.resize(shapes.rasters.size());
+  std::vector<SheetGrid> sheets;
+  int last_lowest = g.ny;
+  for (std::size_t placed = 0; placed < order.size(); ++placed) {
+    const int index = order[placed];
+    if (options.deadline && std::chrono::steady_clock::now() > *options.deadline)
+      throw LayoutError("stopped at the time limit while packing: " + std::to_string(placed) + " of " +
+                        std::to_string(order.size()) + " pieces placed");
+    Spot spot;
+    int sheet = 0;
+    for (; sheet < static_cast<int>(sheets.size()); ++sheet) {
+      spot = find_spot(sheets[sheet], shapes.rasters[index]);
+      if (spot.raster) break;
     }
-    std::sort(result.unplaced.begin(), result.unplaced.end());
-    result.sheet_count = static_cast<int>(sheets.size());
-    return std::make_pair(std::move(result), ny - last_lowest);
-  };
+    if (!spot.raster && (!options.max_sheets || static_cast<int>(sheets.size()) < *options.max_sheets)) {
+      SheetGrid fresh = blank;
+      spot = find_spot(fresh, shapes.rasters[index]);
+      if (spot.raster) {
+        sheets.push_back(std::move(fresh));
+        last_lowest = g.ny;
+      }
+    }
+    if (!spot.raster) {
+      result.unplaced.push_back(index);
+      continue;
+    }
+    const Raster& r = *spot.raster;
+    for (int j = 0; j < r.height; ++j)
+      for (auto [i0, i1] : r.runs[j])
+        sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
+    if (sheet + 1 == static_cast<int>(sheets.size())) last_lowest = std::min(last_lowest, spot.y);
+    const Vec2 corner = g.min + Vec2{g.cell * spot.x, g.cell * spot.y};
+    result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
+    count.placed();
+  }
+  std::sort(result.unplaced.begin(), result.unplaced.end());
+  result.sheet_count = static_cast<int>(sheets.size());
+  run.last_rows = g.ny - last_lowest;
+  return run;
+}
 
-  // Greedy packing depends on the order: a few largest-first orders, keeping the one that places
-  // most, on fewest sheets, leaving the last sheet emptiest (so the others are fullest).
-  PackResult best;
-  int best_rows = 0;
-  bool have = false;
-  auto consider = [&](const std::vector<double>& key) {
-    std::vector<int> order(items.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] > key[b]; });
-    auto [result, rows] = run(order);
-    const auto rank = [](const PackResult& r, int used) {
-      return std::make_tuple(r.unplaced.size(), r.sheet_count, used);
+// Items by decreasing key, ties in input order.
+std::vector<int> largest_first(const std::vector<double>& key) {
+  std::vector<int> order(key.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] > key[b]; });
+  return order;
+}
+
+// The best run so far: the one that places most, on fewest sheets, leaving the last sheet emptiest (so
+// the others are fullest).
+struct BestRun {
+  std::optional<OrderRun> best;
+  void consider(OrderRun run) {
+    const auto rank = [](const OrderRun& r) {
+      return std::make_tuple(r.result.unplaced.size(), r.result.sheet_count, r.last_rows);
     };
-    if (!have || rank(result, rows) < rank(best, best_rows)) {
-      best = std::move(result);
-      best_rows = rows;
-      have = true;
-    }
-  };
-  for (const std::vector<double>* key : {&area, &longest, &girth})
-    consider(*key);
+    if (!best || rank(run) < rank(*best)) best = std::move(run);
+  }
+};
+
+}  // namespace
+
+PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
+  if (options.engine == PackEngine::Nest2d) return pack_items_nest2d(items, options);
+  const PackGrid g = pack_grid(options);
+  const SheetGrid blank = blank_sheet(g, options.keep_out_mm);
+  const ItemRasters shapes = rasterize_items(items, options.rotations, g);
+  const int shaken = shaken_orders(items.size(), options.shaken_orders);
+  PlacementCount count{options, static_cast<long>(3 + shaken) * static_cast<long>(items.size())};
+
+  // Greedy packing depends on the order: a few largest-first orders, keeping the best.
+  BestRun runs;
+  for (const std::vector<double>* key : {&shapes.area, &shapes.longest, &shapes.girth})
+    runs.consider(pack_in_order(largest_first(*key), shapes, g, blank, options, count));
 
   // When that leaves more sheets than the items' cells could fill, shaken largest-first orders (each
   // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
   // seed: the same input always packs the same way.
-  const long bound = reachable_sheets(rasters, empty.free_cells());
+  const long bound = reachable_sheets(shapes.rasters, blank.free_cells());
   std::uint64_t seed = kShakeSeed;
-  for (int k = 0; k < shaken && best.unplaced.empty() && best.sheet_count > bound; ++k) {
-    std::vector<double> key = area;
+  for (int k = 0; k < shaken && runs.best->result.unplaced.empty() && runs.best->result.sheet_count > bound;
+       ++k) {
+    std::vector<double> key = shapes.area;
     for (double& a : key)
       a *= std::exp2(2 * unit_random(seed) - 1);
-    consider(key);
+    runs.consider(pack_in_order(largest_first(key), shapes, g, blank, options, count));
   }
-  if (options.progress) options.progress(most_placements, most_placements);
-  return best;
+  if (options.progress) options.progress(count.most, count.most);
+  return std::move(runs.best->result);
 }
 
 }  // namespace foldkit::layout

@@ -1,12 +1,45 @@
 #include "foldkit/layout/tabs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <utility>
 
 namespace foldkit::layout {
 namespace {
+
+// How far a tab's collision footprint is pulled off its own edge, mm: touching the face it is glued to,
+// or a neighbour tab at a shared corner, must not count as an overlap.
+constexpr double kLift_mm = 0.05;
+// Smallest sine of a slant the lift is divided by, so that a slant almost along the edge stays bounded.
+constexpr double kLeastLiftSine = 0.05;
+// Overlap tolerance of the collision tests, mm.
+constexpr double kOverlapTolerance_mm = 1e-9;
+// Where the neighbour edge will never carry a tab, a corner keeps this much of its free angle anyway,
+// so that the tab's end stays visibly apart from the neighbour edge.
+constexpr double kCornerMargin_rad = 0.12;
+// Slants tried after options.max_slant_rad when a gentle slant leaves the tab too narrow: steeper, still
+// within the corner's share.
+constexpr std::array<double, 2> kSteeperSlants_rad{std::numbers::pi / 3, 5 * std::numbers::pi / 12};
+// A tab narrowed by its slants to less than this share of the width asked counts as not fitting.
+constexpr double kKeptWidthShare = 0.95;
+// Each narrower try is this share of the previous width.
+constexpr double kNarrowingStep = 0.8;
+// Length tolerance in width and parameter comparisons (mm or edge parameter).
+constexpr double kTolerance = 1e-9;
+// Stretches of an edge tried when no tab fits along all of it: shares of the edge's length, longest
+// first, and where each starts (share of the slack: 1 = flush with the edge's end).
+constexpr std::array<double, 7> kStretchShares{0.75, 0.6, 0.45, 0.33, 0.25, 0.18, 0.12};
+constexpr std::array<double, 5> kStretchStarts{1.0, 0.0, 0.5, 0.25, 0.75};
+// A stretch shorter than this many least widths is not worth a tab.
+constexpr double kShortestStretchInWidths = 1.5;
+// A tab covering this share of its edge covers the whole edge (rounding of the stretch ends).
+constexpr double kWholeEdgeShare = 0.999;
+// The partner side's tab replaces a partial tab on the preferred side only when it is this many times
+// larger in area: alternation is worth a little area.
+constexpr double kOtherSideAreaGain = 1.2;
 
 // Clockwise angle from direction u to direction v, in (0, 2pi]: the free angle outside the piece
 // between an edge leaving a vertex (u) and the previous edge coming back to it (v).
@@ -16,20 +49,39 @@ double clockwise_angle(Vec2 u, Vec2 v) {
   return a;
 }
 
-// A tab's footprint for collision tests: pulled a hair off its own edge so that touching the face it is
-// glued to, or a neighbour tab at a shared corner, does not count as an overlap.
+// A tab's footprint for collision tests: pulled a hair off its own edge (kLift_mm).
 Polygon test_shape(const Polygon& quad) {
   const Vec2 a = quad[0], b = quad[3];
   const Vec2 dir = normalized(b - a);
   const Vec2 out{dir.y, -dir.x};
-  constexpr double kLift = 0.05;
   Polygon shape = quad;
   const Vec2 sa = normalized(quad[1] - a), sb = normalized(quad[2] - b);
-  shape[0] = a + sa * (kLift / std::max(dot(sa, out), 0.05));
-  shape[3] = b + sb * (kLift / std::max(dot(sb, out), 0.05));
+  shape[0] = a + sa * (kLift_mm / std::max(dot(sa, out), kLeastLiftSine));
+  shape[3] = b + sb * (kLift_mm / std::max(dot(sb, out), kLeastLiftSine));
   return shape;
 }
 
+const OutlineEdge& edge_of(std::span<const ScaledPiece> pieces, const SeamSide& s) {
+  return pieces[s.piece].outline_mm[s.loop][s.index];
+}
+
+// The seams in the order they are planned: `order`, or seam order when it is empty.
+std::vector<int> planning_order(std::size_t seam_count, std::span<const int> order) {
+  std::vector<int> sequence(order.begin(), order.end());
+  if (sequence.empty()) {
+    sequence.resize(seam_count);
+    std::iota(sequence.begin(), sequence.end(), 0);
+  }
+  return sequence;
+}
+
+// The largest share of the free angle at each end of one side's edge a tab may take (corner_share).
+struct EdgeCorners {
+  double at_a_rad = 0, at_b_rad = 0;
+};
+
+// What one piece holds while tabs are planned: its triangles' boxes and the tabs placed so far (their
+// collision footprints), per outline edge whether it carries a tab.
 struct PieceState {
   std::vector<Box2> triangle_box;
   std::vector<Polygon> tab_shapes;
@@ -38,120 +90,235 @@ struct PieceState {
   std::vector<std::vector<char>> has_tab;  // per loop, per outline index
 };
 
-}  // namespace
-
-Polygon tab_trapezoid(Vec2 a, Vec2 b, double w, double slant_a, double slant_b) {
-  const double length = norm(b - a);
-  const Vec2 dir = (b - a) / length;
-  const Vec2 out{dir.y, -dir.x};  // right of a->b: away from the piece
-  const double ca = 1 / std::tan(slant_a), cb = 1 / std::tan(slant_b);
-  // Keep a short outer side: a pointed tab is hard to glue and its tip tears.
-  w = std::min(w, 0.9 * length / (ca + cb));
-  return {a, a + out * w + dir * (w * ca), b + out * w - dir * (w * cb), b};
-}
-
-TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
-                  std::span<const int> order) {
-  TabPlan plan;
-  plan.tab_of_seam.resize(seams.size());
-  std::vector<PieceState> state(pieces.size());
-  for (std::size_t p = 0; p < pieces.size(); ++p) {
-    for (const Triangle2& t : pieces[p].triangles_mm)
-      state[p].triangle_box.push_back(bounds(t));
-    for (const OutlineLoop& loop : pieces[p].outline_mm)
-      state[p].has_tab.emplace_back(loop.size(), 0);
+// Plans the tabs seam by seam: place() puts one seam's tab on the side that keeps alternation and
+// area, remove() and record() take a placed tab away and put one back, repair() swaps a blocking
+// neighbour's tab to make room for a dropped seam.
+class TabPlanner {
+ public:
+  TabPlanner(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options)
+      : pieces_(pieces), seams_(seams), o_(options), state_(pieces.size()), seam_at_(pieces.size()) {
+    plan_.tab_of_seam.resize(seams.size());
+    settled_.assign(seams.size(), 0);
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      for (const Triangle2& t : pieces[p].triangles_mm)
+        state_[p].triangle_box.push_back(bounds(t));
+      for (const OutlineLoop& loop : pieces[p].outline_mm) {
+        state_[p].has_tab.emplace_back(loop.size(), 0);
+        seam_at_[p].emplace_back(loop.size(), -1);
+      }
+    }
+    for (std::size_t i = 0; i < seams.size(); ++i)
+      for (const SeamSide& s : seams[i].sides)
+        if (s.piece >= 0) seam_at_[s.piece][s.loop][s.index] = static_cast<int>(i);
   }
 
-  auto fits = [&](int p, const Polygon& shape) {
+  // Places the tab of one seam (the preferred side's, or the other side's when that keeps a larger
+  // tab) and settles the seam; false when neither side has room.
+  bool place(int index) {
+    const Seam& seam = seams_[index];
+    const int first = preferred_side(seam);
+    std::optional<Tab> tab = try_side(index, first);
+    // A full tab on the preferred side is taken as is; otherwise the side that keeps the larger tab.
+    if (!is_full(tab, seam.sides[first])) {
+      std::optional<Tab> other = try_side(index, 1 - first);
+      if (other && (!tab || signed_area(other->quad_mm) > kOtherSideAreaGain * signed_area(tab->quad_mm)))
+        tab = std::move(other);
+    }
+    settled_[index] = 1;
+    if (!tab) return false;
+    tab->seam = SeamId{index};
+    record(std::move(*tab));
+    return true;
+  }
+
+  // A seam left without a tab is often blocked by one neighbour's tab that would also fit elsewhere
+  // (the other side, or narrower). Take that tab away, place this seam's, and put the neighbour's back;
+  // keep the swap only when both seams end up with a tab.
+  bool repair(int index) {
+    for (int other : tabbed_seams_near(index)) {
+      if (!plan_.tab_of_seam[other]) continue;
+      const Tab kept = *plan_.tab_of_seam[other];
+      remove(other);
+      if (place(index)) {
+        if (place(other)) return true;
+        remove(index);
+      }
+      record(kept);  // the neighbour's tab back exactly as it was
+    }
+    return false;
+  }
+
+  TabPlan take_plan(std::span<const int> dropped) {
+    for (int index : dropped)
+      plan_.dropped.push_back(SeamId{index});
+    std::sort(plan_.dropped.begin(), plan_.dropped.end());
+    return std::move(plan_);
+  }
+
+ private:
+  // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
+  // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
+  int preferred_side(const Seam& seam) const {
+    return neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
+  }
+
+  int neighbours_with_tabs(const SeamSide& s) const {
+    if (s.piece < 0) return 3;
+    const auto& flags = state_[s.piece].has_tab[s.loop];
+    const int n = static_cast<int>(flags.size());
+    return flags[(s.index + n - 1) % n] + flags[(s.index + 1) % n];
+  }
+
+  // Full width (for its edge) along the whole edge of `side`.
+  bool is_full(const std::optional<Tab>& tab, const SeamSide& side) const {
+    if (!tab) return false;
+    const double base = norm(tab->quad_mm[3] - tab->quad_mm[0]);
+    return tab->width_mm >= kKeptWidthShare * std::min(o_.width_mm, o_.width_per_length * base) &&
+           base >= kWholeEdgeShare * edge_length(side);
+  }
+
+  double edge_length(const SeamSide& s) const {
+    if (s.piece < 0) return 0.0;
+    const OutlineEdge& e = edge_of(pieces_, s);
+    return norm(e.b - e.a);
+  }
+
+  // The placed tab joins its piece's obstacles and the plan. place() and repair() both record here.
+  void record(Tab tab) {
+    const int index = tab.seam.value();
+    const SeamSide& s = seams_[index].sides[tab.side];
+    PieceState& ps = state_[s.piece];
+    ps.tab_shapes.push_back(test_shape(tab.quad_mm));
+    ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
+    ps.tab_seam.push_back(index);
+    ps.has_tab[s.loop][s.index] = 1;
+    plan_.tab_of_seam[index] = std::move(tab);
+  }
+
+  void remove(int index) {
+    const Tab& tab = *plan_.tab_of_seam[index];
+    const SeamSide& s = seams_[index].sides[tab.side];
+    PieceState& ps = state_[s.piece];
+    for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
+      if (ps.tab_seam[k] == index) {
+        ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
+        ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
+        ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
+        break;
+      }
+    ps.has_tab[s.loop][s.index] = 0;
+    plan_.tab_of_seam[index].reset();
+  }
+
+  // The seams whose tabs lie within a tab's width of the seam's edges, increasing.
+  std::vector<int> tabbed_seams_near(int index) const {
+    Box2 reach;
+    for (const SeamSide& side : seams_[index].sides) {
+      if (side.piece < 0) continue;
+      const OutlineEdge& e = edge_of(pieces_, side);
+      reach.add(e.a);
+      reach.add(e.b);
+    }
+    const Vec2 margin{o_.width_mm, o_.width_mm};
+    reach = Box2{reach.min - margin, reach.max + margin};
+    std::vector<int> near;
+    for (const SeamSide& side : seams_[index].sides) {
+      if (side.piece < 0) continue;
+      const PieceState& ps = state_[side.piece];
+      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
+        if (reach.overlaps(ps.tab_box[k])) near.push_back(ps.tab_seam[k]);
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    return near;
+  }
+
+  // Clear of the piece's triangles and of its tabs placed so far.
+  bool fits(int p, const Polygon& shape) const {
     const Box2 box = bounds_of(shape);
-    const ScaledPiece& piece = pieces[p];
+    const ScaledPiece& piece = pieces_[p];
+    const PieceState& ps = state_[p];
     for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
-      if (box.overlaps(state[p].triangle_box[k]) && convex_overlap(shape, piece.triangles_mm[k], 1e-9))
+      if (box.overlaps(ps.triangle_box[k]) &&
+          convex_overlap(shape, piece.triangles_mm[k], kOverlapTolerance_mm))
         return false;
-    for (std::size_t k = 0; k < state[p].tab_shapes.size(); ++k)
-      if (box.overlaps(state[p].tab_box[k]) && convex_overlap(shape, state[p].tab_shapes[k], 1e-9))
+    for (std::size_t k = 0; k < ps.tab_shapes.size(); ++k)
+      if (box.overlaps(ps.tab_box[k]) && convex_overlap(shape, ps.tab_shapes[k], kOverlapTolerance_mm))
         return false;
     return true;
-  };
+  }
 
-  auto edge_length = [&](const SeamSide& s) {
-    if (s.piece < 0) return 0.0;
-    const OutlineEdge& e = pieces[s.piece].outline_mm[s.loop][s.index];
-    return norm(e.b - e.a);
-  };
-
-  // Which seam each outline edge belongs to, and which seams are settled (tab placed or dropped).
-  std::vector<std::vector<std::vector<int>>> seam_at(pieces.size());
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-    for (const OutlineLoop& loop : pieces[p].outline_mm)
-      seam_at[p].emplace_back(loop.size(), -1);
-  for (std::size_t i = 0; i < seams.size(); ++i)
-    for (const SeamSide& s : seams[i].sides)
-      if (s.piece >= 0) seam_at[s.piece][s.loop][s.index] = static_cast<int>(i);
-  std::vector<char> settled(seams.size(), 0);
-
-  // The share of a corner's free angle a tab may take: all of it when the neighbour edge will never
-  // carry a tab (it is this seam's partner, a settled seam without a tab here, or no seam at all), else
-  // half, so that the neighbour's tab can take the other half.
-  auto corner_cap = [&](const SeamSide& s, int neighbour, int seam, double free) {
-    const int other = seam_at[s.piece][s.loop][neighbour];
+  // The share of a corner's free angle a tab may take: all of it (less a margin) when the neighbour
+  // edge will never carry a tab (it is this seam's partner, a settled seam without a tab here, or no
+  // seam at all), else half, so that the neighbour's tab can take the other half.
+  double corner_share(const SeamSide& s, int neighbour, int seam, double free_rad) const {
+    const int other = seam_at_[s.piece][s.loop][neighbour];
     const bool open =
-        other == seam || other < 0 || (settled[other] && !state[s.piece].has_tab[s.loop][neighbour]);
-    return open ? std::max(0.5 * free, free - 0.12) : 0.5 * free;
-  };
+        other == seam || other < 0 || (settled_[other] && !state_[s.piece].has_tab[s.loop][neighbour]);
+    return open ? std::max(0.5 * free_rad, free_rad - kCornerMargin_rad) : 0.5 * free_rad;
+  }
 
-  // A tab for one side: the largest that fits. The full edge first, full width then narrower; then a
-  // stretch of the edge only (its inner ends are mid-edge, free 180°), slid along the edge so that it
-  // finds the edge's widest free part, e.g. the mouth of a narrow notch.
-  auto try_side = [&](const Seam& seam, int seam_index, int k) -> std::optional<Tab> {
-    const SeamSide& s = seam.sides[k];
-    if (s.piece < 0) return std::nullopt;
-    const OutlineLoop& loop = pieces[s.piece].outline_mm[s.loop];
+  EdgeCorners corners(const SeamSide& s, int seam) const {
+    const OutlineLoop& loop = pieces_[s.piece].outline_mm[s.loop];
     const int n = static_cast<int>(loop.size());
+    const int before = (s.index + n - 1) % n, after = (s.index + 1) % n;
     const OutlineEdge& e = loop[s.index];
-    const OutlineEdge& prev = loop[(s.index + n - 1) % n];
-    const OutlineEdge& next = loop[(s.index + 1) % n];
+    const OutlineEdge& prev = loop[before];
+    const OutlineEdge& next = loop[after];
+    return {corner_share(s, before, seam, clockwise_angle(e.b - e.a, prev.a - e.a)),
+            corner_share(s, after, seam, clockwise_angle(next.b - e.b, e.a - e.b))};
+  }
+
+  // A tab for side k of seam `index`: the largest that fits. The full edge first, full width then
+  // narrower; then a stretch of the edge only.
+  std::optional<Tab> try_side(int index, int k) const {
+    const SeamSide& s = seams_[index].sides[k];
+    if (s.piece < 0) return std::nullopt;
+    const OutlineEdge& e = edge_of(pieces_, s);
     const double length = norm(e.b - e.a);
     if (length <= 0) return std::nullopt;
-    const double free_a =
-        corner_cap(s, (s.index + n - 1) % n, seam_index, clockwise_angle(e.b - e.a, prev.a - e.a));
-    const double free_b =
-        corner_cap(s, (s.index + 1) % n, seam_index, clockwise_angle(next.b - e.b, e.a - e.b));
-    // A tab along p->q (a stretch of the edge) whose slants are at most limit_p, limit_q.
-    auto attempt = [&](Vec2 p, Vec2 q, double limit_p, double limit_q, double w) -> std::optional<Tab> {
-      // Gentle slants first; steeper ones (still within the corner's share) when the edge is short.
-      for (double cap : {options.max_slant_rad, std::numbers::pi / 3, 5 * std::numbers::pi / 12}) {
-        const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
-        Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
-        const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
-        if (actual < std::max(0.95 * w, options.min_width_mm - 1e-9)) continue;
-        if (fits(s.piece, test_shape(quad))) return Tab{-1, k, s.piece, std::move(quad), actual};
-      }
-      return std::nullopt;
-    };
-    const double top =
-        std::min(options.width_mm, std::max(options.width_per_length * length, options.min_width_mm));
-    std::vector<double> widths;
-    for (double w = top; w >= options.min_width_mm - 1e-9; w *= 0.8)
-      widths.push_back(w);
-    if (widths.empty() || widths.back() > options.min_width_mm + 1e-9) widths.push_back(options.min_width_mm);
+    const EdgeCorners free = corners(s, index);
+    const std::vector<double> widths = tab_widths_to_try(length, o_);
     for (double w : widths)
-      if (auto tab = attempt(e.a, e.b, free_a, free_b, w)) return tab;
-    // Stretches: the longest that fits at the widest width, among positions along the edge.
+      if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w)) return tab;
+    return best_stretch(s.piece, k, e, free, widths);
+  }
+
+  // A tab along p->q (the edge or a stretch of it) of width w whose slants are at most limit_p,
+  // limit_q: gentle slants first; steeper ones (still within the corner's share) when the edge is short.
+  std::optional<Tab> fit_trapezoid(int piece, int k, Vec2 p, Vec2 q, double limit_p, double limit_q,
+                                   double w) const {
+    const std::array<double, 3> caps{o_.max_slant_rad, kSteeperSlants_rad[0], kSteeperSlants_rad[1]};
+    for (double cap : caps) {
+      const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
+      Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
+      const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
+      if (actual < std::max(kKeptWidthShare * w, o_.min_width_mm - kTolerance)) continue;
+      if (fits(piece, test_shape(quad))) return Tab{SeamId{}, k, piece, std::move(quad), actual};
+    }
+    return std::nullopt;
+  }
+
+  // A stretch of the edge (its inner ends are mid-edge, free 180°), slid along the edge so that it finds
+  // the edge's widest free part, e.g. the mouth of a narrow notch: the largest in area, the longest
+  // stretches first, stopping at one of nearly full width.
+  std::optional<Tab> best_stretch(int piece, int k, const OutlineEdge& e, const EdgeCorners& free,
+                                  const std::vector<double>& widths) const {
+    const double length = norm(e.b - e.a);
     std::optional<Tab> best;
     double best_area = 0;
-    for (double part : {0.75, 0.6, 0.45, 0.33, 0.25, 0.18, 0.12}) {
+    for (double part : kStretchShares) {
       const double stretch = part * length;
-      if (stretch < 1.5 * options.min_width_mm) break;
-      for (double start : {1.0, 0.0, 0.5, 0.25, 0.75}) {
+      if (stretch < kShortestStretchInWidths * o_.min_width_mm) break;
+      for (double start : kStretchStarts) {
         const double t0 = start * (1 - part), t1 = t0 + part;
         const Vec2 p = e.a + (e.b - e.a) * t0, q = e.a + (e.b - e.a) * t1;
-        const double lp = t0 < 1e-9 ? free_a : std::numbers::pi,
-                     lq = t1 > 1 - 1e-9 ? free_b : std::numbers::pi;
+        const double lp = t0 < kTolerance ? free.at_a_rad : std::numbers::pi,
+                     lq = t1 > 1 - kTolerance ? free.at_b_rad : std::numbers::pi;
         for (double w : widths) {
           if (w * stretch <= best_area) break;
-          if (auto tab = attempt(p, q, lp, lq,
-                                 std::min(w, options.width_per_length * stretch + options.min_width_mm))) {
+          const double narrowed = std::min(w, o_.width_per_length * stretch + o_.min_width_mm);
+          if (auto tab = fit_trapezoid(piece, k, p, q, lp, lq, narrowed)) {
             const double area = signed_area(tab->quad_mm);
             if (area > best_area) {
               best_area = area;
@@ -161,120 +328,68 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
           }
         }
       }
-      if (best && best->width_mm >= 0.95 * widths.front()) break;
+      if (best && best->width_mm >= kKeptWidthShare * widths.front()) break;
     }
     return best;
-  };
-
-  auto neighbours_with_tabs = [&](const SeamSide& s) {
-    if (s.piece < 0) return 3;
-    const auto& flags = state[s.piece].has_tab[s.loop];
-    const int n = static_cast<int>(flags.size());
-    return flags[(s.index + n - 1) % n] + flags[(s.index + 1) % n];
-  };
-
-  std::vector<int> sequence(order.begin(), order.end());
-  if (sequence.empty()) {
-    sequence.resize(seams.size());
-    std::iota(sequence.begin(), sequence.end(), 0);
   }
-  // Places the tab of one seam (the preferred side's, or the other side's when that keeps a larger
-  // tab); false when neither side has room.
-  auto place = [&](int index) {
-    const Seam& seam = seams[index];
-    // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
-    // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
-    int first = neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
-    std::optional<Tab> tab = try_side(seam, index, first);
-    // A full tab on the preferred side is taken as is; otherwise the side that keeps the larger tab.
-    const bool full =
-        tab &&
-        tab->width_mm >= 0.95 * std::min(options.width_mm, options.width_per_length *
-                                                               norm(tab->quad_mm[3] - tab->quad_mm[0])) &&
-        norm(tab->quad_mm[3] - tab->quad_mm[0]) >= 0.999 * edge_length(seam.sides[first]);
-    if (!full) {
-      std::optional<Tab> other = try_side(seam, index, 1 - first);
-      if (other && (!tab || signed_area(other->quad_mm) > 1.2 * signed_area(tab->quad_mm)))
-        tab = std::move(other);
-    }
-    settled[index] = 1;
-    if (!tab) return false;
-    tab->seam = index;
-    const SeamSide& s = seam.sides[tab->side];
-    PieceState& ps = state[s.piece];
-    ps.tab_shapes.push_back(test_shape(tab->quad_mm));
-    ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
-    ps.tab_seam.push_back(index);
-    ps.has_tab[s.loop][s.index] = 1;
-    plan.tab_of_seam[index] = std::move(tab);
-    return true;
-  };
-  auto remove = [&](int index) {
-    const Tab& tab = *plan.tab_of_seam[index];
-    const SeamSide& s = seams[index].sides[tab.side];
-    PieceState& ps = state[s.piece];
-    for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
-      if (ps.tab_seam[k] == index) {
-        ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
-        ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
-        ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
-        break;
-      }
-    ps.has_tab[s.loop][s.index] = 0;
-    plan.tab_of_seam[index].reset();
-  };
 
+  std::span<const ScaledPiece> pieces_;
+  std::span<const Seam> seams_;
+  const TabOptions& o_;
+  std::vector<PieceState> state_;
+  std::vector<std::vector<std::vector<int>>> seam_at_;  // per piece, loop, outline index: its seam or -1
+  std::vector<char> settled_;                           // per seam: tab placed or dropped
+  TabPlan plan_;
+};
+
+}  // namespace
+
+Polygon tab_trapezoid(Vec2 a, Vec2 b, double w, double slant_a, double slant_b) {
+  // Keep a short outer side: a pointed tab is hard to glue and its tip tears.
+  constexpr double kMostSlantShare = 0.9;  // of the edge's length, both slants together
+  const double length = norm(b - a);
+  const Vec2 dir = (b - a) / length;
+  const Vec2 out{dir.y, -dir.x};  // right of a->b: away from the piece
+  const double ca = 1 / std::tan(slant_a), cb = 1 / std::tan(slant_b);
+  w = std::min(w, kMostSlantShare * length / (ca + cb));
+  return {a, a + out * w + dir * (w * ca), b + out * w - dir * (w * cb), b};
+}
+
+std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& o) {
+  const double top = std::min(o.width_mm, std::max(o.width_per_length * edge_length_mm, o.min_width_mm));
+  std::vector<double> widths;
+  for (double w = top; w >= o.min_width_mm - kTolerance; w *= kNarrowingStep)
+    widths.push_back(w);
+  if (widths.empty() || widths.back() > o.min_width_mm + kTolerance) widths.push_back(o.min_width_mm);
+  return widths;
+}
+
+bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& o) {
+  // A mouth this much wider than the narrowest tab still takes none once the slants are cut.
+  constexpr double kSlitMouthSpare_mm = 0.5;
+  const SeamSide& a = seam.sides[0];
+  const SeamSide& b = seam.sides[1];
+  if (a.piece < 0 || a.piece != b.piece || a.loop != b.loop) return false;
+  const OutlineLoop& loop = pieces[a.piece].outline_mm[a.loop];
+  const int n = static_cast<int>(loop.size());
+  const bool a_first = (a.index + 1) % n == b.index;
+  if (!a_first && (b.index + 1) % n != a.index) return false;
+  const OutlineEdge& first = loop[a_first ? a.index : b.index];
+  const OutlineEdge& second = loop[a_first ? b.index : a.index];
+  // first ends where second starts (the slit's tip): the gap between their far ends is the mouth.
+  return norm(first.a - second.b) < o.min_width_mm + kSlitMouthSpare_mm;
+}
+
+TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
+                  std::span<const int> order) {
+  TabPlanner planner(pieces, seams, options);
+  std::vector<int> blocked;
+  for (int index : planning_order(seams.size(), order))
+    if (!planner.place(index)) blocked.push_back(index);
   std::vector<int> dropped;
-  for (int index : sequence)
-    if (!place(index)) dropped.push_back(index);
-
-  // Repair: a seam left without a tab is often blocked by one neighbour's tab that would also fit
-  // elsewhere (the other side, or narrower). Take that tab away, place this seam's, and put the
-  // neighbour's back; keep the swap only when both seams end up with a tab.
-  for (int index : dropped) {
-    bool repaired = false;
-    Box2 reach;
-    for (const SeamSide& side : seams[index].sides) {
-      if (side.piece < 0) continue;
-      const OutlineEdge& e = pieces[side.piece].outline_mm[side.loop][side.index];
-      reach.add(e.a);
-      reach.add(e.b);
-    }
-    reach = Box2{reach.min - Vec2{options.width_mm, options.width_mm},
-                 reach.max + Vec2{options.width_mm, options.width_mm}};
-    std::vector<int> near;
-    for (const SeamSide& side : seams[index].sides) {
-      if (side.piece < 0) continue;
-      const PieceState& ps = state[side.piece];
-      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
-        if (reach.overlaps(ps.tab_box[k])) near.push_back(ps.tab_seam[k]);
-    }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    for (int other : near) {
-      if (!plan.tab_of_seam[other]) continue;
-      const Tab kept = *plan.tab_of_seam[other];
-      remove(other);
-      if (place(index)) {
-        if (place(other)) {
-          repaired = true;
-          break;
-        }
-        remove(index);
-      }
-      // Put the neighbour's tab back exactly as it was.
-      const SeamSide& s = seams[other].sides[kept.side];
-      PieceState& ps = state[s.piece];
-      ps.tab_shapes.push_back(test_shape(kept.quad_mm));
-      ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
-      ps.tab_seam.push_back(other);
-      ps.has_tab[s.loop][s.index] = 1;
-      plan.tab_of_seam[other] = kept;
-    }
-    if (!repaired) plan.dropped.push_back(index);
-  }
-  std::sort(plan.dropped.begin(), plan.dropped.end());
-  return plan;
+  for (int index : blocked)
+    if (!planner.repair(index)) dropped.push_back(index);
+  return planner.take_plan(dropped);
 }
 
 }  // namespace foldkit::layout

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "foldkit/layout/ids.hpp"
 #include "foldkit/layout/outline.hpp"
 
 namespace foldkit::layout {
@@ -17,7 +18,8 @@ struct ArrowOptions {
 
 /// One arrow in its piece's frame (mm, y up): a polyline tail -> tip -> barb, tip -> other barb.
 struct Arrow {
-  int seam = -1, side = 0, piece = -1;
+  SeamId seam;
+  int side = 0, piece = -1;
   std::vector<Vec2> points_mm;
   Vec2 tail_mm, tip_mm;
 };

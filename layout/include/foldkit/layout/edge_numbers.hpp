@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "foldkit/layout/folds.hpp"
+#include "foldkit/layout/ids.hpp"
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/polygon.hpp"
 #include "foldkit/layout/tabs.hpp"
@@ -26,12 +27,16 @@ struct LabelOptions {
   double char_width = 0.95;
   double gap_mm = 0.5;         ///< between the edge and the label's foot
   double clearance_mm = 0.25;  ///< least distance from other lines and labels
+  /// The assembly-step hint after the number: its cap height and the gap before it, as shares of the
+  /// number's cap height.
+  double hint_height_share = 0.75;
+  double hint_gap_share = 0.3;
 };
 
 /// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
 /// towards perp_ccw(dir); `box_mm` reaches from the descenders below the baseline to the cap height.
 struct Label {
-  int seam = -1;
+  SeamId seam;
   int side = 0;
   int piece = -1;
   std::string text;
@@ -78,5 +83,10 @@ double label_descent_mm(const std::string& text, double height_mm);
 
 /// Length of `text` on the page at cap height `height_mm` under `options.char_width`.
 double label_width_mm(const std::string& text, double height_mm, const LabelOptions& options);
+
+/// Length of a label on the page: its `text` at cap height `height_mm`, then its `hint` ("" for none)
+/// after the hint gap at the hint's height.
+double label_width_mm(const std::string& text, const std::string& hint, double height_mm,
+                      const LabelOptions& options);
 
 }  // namespace foldkit::layout

@@ -2,17 +2,18 @@
 // Fold lines: one per fold edge of a piece, mountain or valley by the sign of the dihedral angle,
 // near-flat folds left out, both ends pulled back from the vertices so that a scoring blade does not
 // run into the outline and tear the corner.
-#include <numbers>
 #include <vector>
 
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/sheet/sheet.hpp"
+#include "foldkit/unfold/flat_faces.hpp"
 
 namespace foldkit::layout {
 
 struct FoldOptions {
-  /// Folds with |angle| below this are flat and not drawn.
-  double flat_fold_rad = 0.5 * std::numbers::pi / 180.0;
+  /// Folds with |angle| below this are flat and not drawn: the unfolding's flat-face angle, so that a
+  /// fold hidden inside a flat face is never drawn either.
+  double flat_fold_rad = unfold::kDefaultFlatAngleRad;
   /// Each end stops this far short of its vertex (never more than a quarter of the fold's length).
   double inset_mm = 0.6;
 };

@@ -9,10 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/layout/edge_numbers.hpp"
 #include "foldkit/layout/folds.hpp"
 #include "foldkit/layout/label_audit.hpp"
 #include "foldkit/layout/pack.hpp"
 #include "foldkit/layout/regmarks.hpp"
+#include "foldkit/layout/tabs.hpp"
 #include "foldkit/sheet/sheet.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
@@ -38,18 +40,17 @@ struct LayoutOptions {
   bool split_oversized = true;
   Vec2 paper_mm{210, 297};  ///< A4 portrait by default (already turned to the wanted orientation)
   double margin_mm = 10;
-  /// Folds whose |angle| is below this (radians) are not drawn.
-  double flat_fold_rad = 0.5 * std::numbers::pi / 180.0;
-  /// Fold lines stop this far short of their vertices.
-  double fold_inset_mm = 0.6;
+  /// Which folds are drawn (flat ones are not) and how far short of their vertices they stop.
+  FoldOptions fold;
 
-  bool tabs = true;             ///< one glue tab per seam pair
-  double tab_width_mm = 5;      ///< full tab width; narrower on short edges and in tight spots
-  double min_tab_width_mm = 2;  ///< narrower than this a tab is useless: it moves or is dropped
+  bool tabs = true;  ///< one glue tab per seam pair
+  /// Tab width and shape; a min_width_mm above width_mm counts as width_mm.
+  TabOptions tab;
 
-  bool numbers = true;        ///< matching edge numbers
-  double label_min_mm = 2;    ///< smallest legible label (cap height)
-  double label_max_mm = 3.5;  ///< largest label
+  bool numbers = true;  ///< matching edge numbers
+  /// Edge-number sizes and clearances; min_mm is also the part letters' least size. With arrows the
+  /// labels sit higher above their edge (kArrowLabelGap_mm).
+  LabelOptions label;
   bool arrows = false;        ///< coloured direction arrows per seam pair (seed Figure 1(c))
   bool hints = false;         ///< assembly step beside each number and an assembly-order list
   bool piece_letters = true;  ///< each part's letter (A, B, …) inside it
@@ -59,10 +60,9 @@ struct LayoutOptions {
   bool regmarks = false;  ///< Silhouette registration marks for print-and-cut
   RegMarkOptions regmark;
 
-  double spacing_mm = 2;      ///< least gap between pieces (with tabs) on a sheet
-  int rotations = 8;          ///< evenly spaced rotations tried per piece when packing
-  double pack_cell_mm = 0.5;  ///< packing raster resolution
-  PackEngine packer = PackEngine::Raster;
+  /// Spacing between pieces (with tabs), rotations tried, raster cell and engine. Where they go is the
+  /// layout's to say: area_mm, keep_out_mm, max_sheets, deadline and progress are set by layout_sheets.
+  PackOptions pack;
   /// When set, layout stops here with a LayoutError ("stopped at the time limit …").
   std::optional<std::chrono::steady_clock::time_point> deadline;
   /// Called as the layout goes (from the calling thread, often: keep it cheap); may be empty.
@@ -125,6 +125,9 @@ struct LayoutResult {
     return {q.x, paper_height_mm - q.y};
   }
 };
+
+/// How far above their edge labels sit when arrows run along the edges (LabelOptions::gap_mm), mm.
+constexpr double kArrowLabelGap_mm = 1.6;
 
 /// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).
 Box2 printable_area(const LayoutOptions& options);

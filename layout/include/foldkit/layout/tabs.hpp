@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/layout/ids.hpp"
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/polygon.hpp"
 
@@ -26,8 +27,8 @@ struct TabOptions {
 
 /// A placed tab, in its piece's frame (mm, y up).
 struct Tab {
-  int seam = -1;  ///< index into the seam list
-  int side = 0;   ///< which side of the seam carries it (Seam::sides[side])
+  SeamId seam;   ///< its seam
+  int side = 0;  ///< which side of the seam carries it (Seam::sides[side])
   int piece = -1;
   Polygon quad_mm;  ///< counter-clockwise: edge start, outer start, outer end, edge end
   double width_mm = 0;
@@ -35,12 +36,21 @@ struct Tab {
 
 struct TabPlan {
   std::vector<std::optional<Tab>> tab_of_seam;  ///< per seam, its tab or nullopt when dropped
-  std::vector<int> dropped;                     ///< seams without a tab
+  std::vector<SeamId> dropped;                  ///< seams without a tab, increasing
 };
 
 /// Tabs for `seams` (processed in the order of `order`, or seam order when empty).
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
                   std::span<const int> order = {});
+
+/// The widths a tab on an edge of `edge_length_mm` is tried at, widest first: the full width (at most
+/// width_per_length of the edge), then narrower by steps, down to min_width_mm (always the last).
+std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& options);
+
+/// Whether `seam` is a narrow slit: its two sides are neighbours on one outline, meeting at the slit's
+/// tip, and their far ends are closer than a tab of min_width_mm (with a little to spare) needs. No tab
+/// fits there; the maker closes it edge to edge.
+bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& options);
 
 /// The trapezoid on the outer side of outline edge a->b (piece on the left) of width w with slanted
 /// ends at angles slant_a, slant_b from the edge; narrowed so that its outer side stays positive.
