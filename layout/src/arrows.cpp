@@ -24,7 +24,7 @@ std::vector<Arrow> seam_arrows(std::span<const ScaledPiece> pieces, std::span<co
       // Barbs at 30 degrees to the shaft.
       const Vec2 back = -dir * (head * 0.866);
       const Vec2 side_step = perp_ccw(dir) * (head * 0.5);
-      arrows.push_back({SeamId{s},
+      arrows.push_back({SeamId(static_cast<int>(s)),
                         k,
                         side.piece,
                         {tail, tip, tip + back + side_step, tip, tip + back - side_step},

@@ -185,7 +185,7 @@ class TabPlanner {
 
   // The placed tab joins its piece's obstacles and the plan. place() and repair() both record here.
   void record(Tab tab) {
-    const int index = tab.seam.value();
+    const int index = tab.seam.index();
     const SeamSide& s = seams_[index].sides[tab.side];
     PieceState& ps = state_[s.piece];
     ps.tab_shapes.push_back(test_shape(tab.quad_mm));
