@@ -29,17 +29,18 @@ const char* tool_kind_name(ToolKind k) {
   return "?";
 }
 
+const std::vector<std::pair<std::string, FoldMethod>>& fold_method_choices() {
+  static const std::vector<std::pair<std::string, FoldMethod>> choices = {
+      {"scorer", FoldMethod::Scorer},
+      {"reduced-force", FoldMethod::ReducedForce},
+      {"perforate", FoldMethod::Perforate},
+      {"none", FoldMethod::None}};
+  return choices;
+}
+
 const char* fold_method_name(FoldMethod m) {
-  switch (m) {
-    case FoldMethod::Scorer:
-      return "scorer";
-    case FoldMethod::ReducedForce:
-      return "reduced-force";
-    case FoldMethod::Perforate:
-      return "perforate";
-    case FoldMethod::None:
-      return "none";
-  }
+  for (const auto& [name, method] : fold_method_choices())
+    if (method == m) return name.c_str();
   return "?";
 }
 
@@ -236,12 +237,6 @@ toml::table parse(const fs::path& file) {
   }
 }
 
-const std::vector<std::pair<std::string, FoldMethod>> kFoldMethods = {
-    {"scorer", FoldMethod::Scorer},
-    {"reduced-force", FoldMethod::ReducedForce},
-    {"perforate", FoldMethod::Perforate},
-    {"none", FoldMethod::None}};
-
 // Every table of a device profile may say where its facts come from (`source = "..."`): kept so
 // `foldkit profiles` and reviews can check them, and so a guess never passes for a measured fact.
 void read_source(Reader& r, DeviceProfile& d) {
@@ -267,7 +262,7 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.protocol = root.choice<Protocol>("protocol", {{"gpgl", Protocol::Gpgl}, {"hpgl", Protocol::Hpgl}});
   d.firmware = root.string("firmware", d.name);
   d.units_per_mm = root.between("units_per_mm", kMinUnitsPerMm, kMaxUnitsPerMm);
-  d.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods, FoldMethod::ReducedForce);
+  d.fold_method = root.choice<FoldMethod>("fold_method", fold_method_choices(), FoldMethod::ReducedForce);
   d.travel_speed_mm_s = root.positive_up_to("travel_speed_mm_s", kMaxSpeedMmS, 200.0);
   d.tool_change_s = root.non_negative("tool_change_s", 0.2);
 
@@ -388,7 +383,7 @@ MediaProfile read_media(Reader& root, const fs::path& file) {
   m.id = file.stem().string();
   m.name = root.string("name");
   m.thickness_mm = root.positive_up_to("thickness_mm", kMaxThicknessMm);
-  if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods);
+  if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", fold_method_choices());
   m.cut = read_settings(root.table("cut"));
   m.score = read_settings(root.table("score"));
   m.draw = read_settings(root.table("draw"));
