@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_layout.hpp"
+#include "choices.hpp"
 #include "cmd_bench.hpp"
 #include "commands.hpp"
 #include "foldkit/error.hpp"
@@ -32,6 +33,7 @@
 #include "foldkit/unfold/unfolding.hpp"
 #include "json_report.hpp"
 #include "length_option.hpp"
+#include "unfold_options.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -39,9 +41,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::optional<unfold::Method> parse_method(const std::string& m) {
-  if (m == "mst") return unfold::Method::Mst;
-  if (m == "search") return unfold::Method::Search;
-  if (m == "ga") return unfold::Method::Ga;
+  for (const auto& [name, method] : unfold_methods())
+    if (m == name) return method;
   return std::nullopt;
 }
 
@@ -335,7 +336,8 @@ void run_unfold_bench(const BenchArgs& a, const fs::path& corpus) {
   std::vector<std::string> methods = split(a.methods, ',');
   for (const auto& m : methods)
     if (!parse_method(m))
-      throw Error("--methods: unknown method '" + m + "' (mst, search, ga)", ExitCode::Usage);
+      throw Error("--methods: unknown method '" + m + "' (" + joined(choice_names(unfold_methods())) + ")",
+                  ExitCode::Usage);
   const auto meshes = bench_meshes(a, corpus);
   const CsvRows seed_rows = read_csv(reference / "seed_table1.csv");
   const CsvRows blender_rows = read_csv(reference / "blender_paper_model.csv");
