@@ -50,6 +50,9 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"tab_area_mm2", s.tab_area_mm2}};
 }
 
+// What make writes: --format's choices and the extensions -o is known by.
+const std::vector<std::string> kOutputFormats = {"pdf", "svg", "png", "dxf"};
+
 // The format named by --format, else by the output's extension ("-": PDF). Throws a usage error.
 std::string output_format(const std::string& output, const std::string& format) {
   if (!format.empty()) return format;
@@ -57,9 +60,12 @@ std::string output_format(const std::string& output, const std::string& format) 
   std::string ext = std::filesystem::path(output).extension().string();
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".pdf" || ext == ".svg" || ext == ".png" || ext == ".dxf") return ext.substr(1);
-  throw Error("-o " + output + ": output must end in .pdf, .svg, .png or .dxf (or give --format)",
-              ExitCode::Usage);
+  std::string known;  // ".pdf, .svg, .png or .dxf"
+  for (std::size_t i = 0; i < kOutputFormats.size(); ++i) {
+    if (ext == "." + kOutputFormats[i]) return kOutputFormats[i];
+    known += (i == 0 ? "" : i + 1 == kOutputFormats.size() ? " or " : ", ") + ("." + kOutputFormats[i]);
+  }
+  throw Error("-o " + output + ": output must end in " + known + " (or give --format)", ExitCode::Usage);
 }
 
 // Sheets an earlier, longer run left under the same name would be taken for part of this one.
@@ -361,7 +367,7 @@ void setup_make(CLI::App& app) {
                   "standard output");
   cmd->add_option("--format", args->format,
                   "Output format when -o has no such extension (default for -: pdf)")
-      ->check(CLI::IsMember({"pdf", "svg", "png", "dxf"}));
+      ->check(CLI::IsMember(kOutputFormats));
   cmd->add_option(
       "--bundle", args->bundle,
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
