@@ -297,15 +297,19 @@ TEST(SendJob, StopsCleanlyOnCancelWithTheToolUpAndTheJobEnded) {
   EXPECT_LT(dev.strokes().size(), job.stats.strokes);
 }
 
-TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
-  const DeviceProfile& device = profiles().device("test");
+// The two-piece sheet planned for the "test" profile with pen labels, run on `dev` to the end.
+void cut_and_draw_two_pieces(SimulatedDevice& dev) {
   PlanOptions o;
   o.draw_labels = true;
   o.font = &font();
-  SimulatedDevice dev(device);
-  dev.write(
-      stream_bytes(encode_gpgl(plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"), o))));
+  dev.write(stream_bytes(encode_gpgl(
+      plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("copy-80"), o))));
   dev.close();
+}
+
+TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
+  SimulatedDevice dev(profiles().device("test"));
+  cut_and_draw_two_pieces(dev);
   const auto dir = test::temp_dir("sim-render");
   dev.render(dir / "cut.png");
   dev.render(dir / "cut.svg");
@@ -320,14 +324,8 @@ TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
 }
 
 TEST(SimulatedDevice, TheSceneDrawsEveryStrokeInItsToolsColourInsideItsBox) {
-  const DeviceProfile& device = profiles().device("test");
-  PlanOptions o;
-  o.draw_labels = true;
-  o.font = &font();
-  SimulatedDevice dev(device);
-  dev.write(
-      stream_bytes(encode_gpgl(plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"), o))));
-  dev.close();
+  SimulatedDevice dev(profiles().device("test"));
+  cut_and_draw_two_pieces(dev);
   const SimScene scene = dev.scene();
   ASSERT_EQ(scene.lines.size(), dev.strokes().size());
   const std::array<double, 3> pen{0.8, 0.1, 0.1}, cut{0, 0, 0}, score{0.1, 0.3, 0.8}, scorer{0.1, 0.55, 0.2};
