@@ -80,6 +80,116 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+void print_row(const Row& row) {
+  if (!row.error.empty())
+    std::printf("%-28s %5d %5.0f | error: %s\n", row.mesh.c_str(), row.faces, row.size_mm, row.error.c_str());
+  else
+    std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", row.mesh.c_str(), row.faces,
+                row.size_mm, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab, row.seams,
+                row.seconds, row.cpu_seconds);
+  std::fflush(stdout);
+}
+
+// One mesh file: unfolded once, laid out at every size (rows printed as they finish unless JSON). Nothing
+// for a file that does not load or lies outside the face bounds.
+void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std::vector<Row>& rows) {
+  unfold::LoadedMesh loaded;
+  try {
+    loaded = unfold::load_mesh(file);
+  } catch (const Error&) {
+    return;  // not a usable mesh: the loader has its own tests
+  }
+  if (loaded.mesh.num_faces() < a.min_faces || loaded.mesh.num_faces() > a.max_faces) return;
+  unfold::UnfoldOptions uo;
+  uo.time_limit_s = a.time_limit_s;
+  const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
+  const std::string name =
+      (file.parent_path().filename() == "lowpoly" ? "lowpoly/" : "") + file.filename().string();
+  for (double size : a.sizes_mm) {
+    layout::LayoutOptions o;
+    o.paper_mm = paper;
+    o.size_mm = size;
+    if (a.nest2d) o.pack.engine = layout::PackEngine::Nest2d;
+    Row row = run_one(loaded.mesh, unfolded.unfolding, o);
+    row.mesh = name;
+    row.faces = loaded.mesh.num_faces();
+    row.size_mm = size;
+    if (!a.json_out) print_row(row);
+    rows.push_back(std::move(row));
+  }
+}
+
+// The figures the layout targets are judged by, over the rows without an error.
+struct Totals {
+  long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0, over = 0;
+  double seconds = 0, cpu_seconds = 0;
+  std::vector<double> coverage;
+  double ratio() const { return bound > 0 ? double(sheets) / double(bound) : NAN; }
+  /// seams without a tab over the runs of 350-1,000 faces at 150 mm
+  double share() const { return mid_seams > 0 ? double(mid_no_tab) / double(mid_seams) : NAN; }
+};
+
+Totals totals(const std::vector<Row>& rows) {
+  Totals t;
+  for (const Row& r : rows) {
+    if (!r.error.empty()) continue;
+    t.sheets += r.sheets;
+    t.bound += r.bound;
+    t.over += r.sheets > r.bound + 1;
+    t.seconds += r.seconds;
+    t.cpu_seconds += r.cpu_seconds;
+    t.coverage.push_back(r.coverage);
+    if (r.size_mm == 150 && r.faces >= 350 && r.faces <= 1000) {
+      t.mid_seams += r.seams;
+      t.mid_no_tab += r.no_tab;
+    }
+  }
+  return t;
+}
+
+json bench_json(const std::vector<Row>& rows, const Totals& t) {
+  json out{{"rows", json::array()}};
+  for (const Row& r : rows) {
+    json j{{"mesh", r.mesh},
+           {"face_count", r.faces},
+           {"size_mm", r.size_mm},
+           {"wall_s", r.seconds},
+           {"cpu_s", r.cpu_seconds}};
+    if (!r.error.empty()) {
+      j["error"] = r.error;
+    } else {
+      j.update({{"sheet_count", r.sheets},
+                {"area_bound_sheet_count", r.bound},
+                {"part_count", r.parts},
+                {"coverage", r.coverage},
+                {"seam_count", r.seams},
+                {"seams_without_tab_count", r.no_tab}});
+    }
+    out["rows"].push_back(j);
+  }
+  out["totals"] = {{"sheet_count", t.sheets},
+                   {"area_bound_sheet_count", t.bound},
+                   {"sheets_over_bound_ratio", t.ratio()},
+                   {"runs_more_than_one_over_count", t.over},
+                   {"median_coverage", median(t.coverage)},
+                   // over the runs of 350-1,000 faces at 150 mm
+                   {"seams_without_tab_fraction", t.share()},
+                   {"wall_s", t.seconds},
+                   {"cpu_s", t.cpu_seconds}};
+  return out;
+}
+
+void print_totals(const Totals& t) {
+  char no_tab[96] = "no mesh of 350-1,000 faces at 150 mm";
+  if (t.mid_seams > 0)
+    std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm", t.mid_no_tab,
+                  t.mid_seams, 100 * t.share());
+  std::printf(
+      "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
+      "%.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
+      t.sheets, t.bound, t.ratio(), t.over, 100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
+}
+
 }  // namespace
 
 void run_layout_bench(const LayoutBenchArgs& a) {
@@ -87,108 +197,21 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (!fs::is_directory(corpus)) throw InputError(corpus.string(), "no such folder of meshes");
   const auto paper = layout::parse_paper(a.paper);
   if (!paper) throw Error("--paper: unknown paper '" + a.paper + "'", ExitCode::Usage);
-
-  std::vector<Row> rows;
   if (!a.json_out)
     std::printf(
         "foldkit bench --layout: %s, %d-%d faces, %s, search unfolding (seed 1)\n%-28s %5s %5s | %6s %5s %5s "
         "%8s %7s %7s %7s\n",
         corpus.string().c_str(), a.min_faces, a.max_faces, a.paper.c_str(), "mesh", "faces", "size", "sheets",
         "bound", "parts", "coverage", "no tab", "s", "cpu s");
-  for (const fs::path& file : mesh_files(corpus)) {
-    if (!a.filter.empty() && file.filename().string().find(a.filter) == std::string::npos) continue;
-    unfold::LoadedMesh loaded;
-    try {
-      loaded = unfold::load_mesh(file);
-    } catch (const Error&) {
-      continue;  // not a usable mesh: the loader has its own tests
-    }
-    if (loaded.mesh.num_faces() < a.min_faces || loaded.mesh.num_faces() > a.max_faces) continue;
-    unfold::UnfoldOptions uo;
-    uo.time_limit_s = a.time_limit_s;
-    const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
-    const std::string name =
-        (file.parent_path().filename() == "lowpoly" ? "lowpoly/" : "") + file.filename().string();
-    for (double size : a.sizes_mm) {
-      layout::LayoutOptions o;
-      o.paper_mm = *paper;
-      o.size_mm = size;
-      if (a.nest2d) o.pack.engine = layout::PackEngine::Nest2d;
-      Row row = run_one(loaded.mesh, unfolded.unfolding, o);
-      row.mesh = name;
-      row.faces = loaded.mesh.num_faces();
-      row.size_mm = size;
-      if (!a.json_out) {
-        if (!row.error.empty())
-          std::printf("%-28s %5d %5.0f | error: %s\n", name.c_str(), row.faces, size, row.error.c_str());
-        else
-          std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", name.c_str(),
-                      row.faces, size, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab,
-                      row.seams, row.seconds, row.cpu_seconds);
-        std::fflush(stdout);
-      }
-      rows.push_back(std::move(row));
-    }
-  }
-
-  long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0, over = 0;
-  double seconds = 0, cpu_seconds = 0;
-  std::vector<double> coverage;
-  for (const Row& r : rows) {
-    if (!r.error.empty()) continue;
-    sheets += r.sheets;
-    bound += r.bound;
-    over += r.sheets > r.bound + 1;
-    seconds += r.seconds;
-    cpu_seconds += r.cpu_seconds;
-    coverage.push_back(r.coverage);
-    if (r.size_mm == 150 && r.faces >= 350 && r.faces <= 1000) {
-      mid_seams += r.seams;
-      mid_no_tab += r.no_tab;
-    }
-  }
-  const double ratio = bound > 0 ? double(sheets) / double(bound) : NAN;
-  const double share = mid_seams > 0 ? double(mid_no_tab) / double(mid_seams) : NAN;
-  if (a.json_out) {
-    json out{{"rows", json::array()}};
-    for (const Row& r : rows) {
-      json j{{"mesh", r.mesh},
-             {"face_count", r.faces},
-             {"size_mm", r.size_mm},
-             {"wall_s", r.seconds},
-             {"cpu_s", r.cpu_seconds}};
-      if (!r.error.empty()) {
-        j["error"] = r.error;
-      } else {
-        j.update({{"sheet_count", r.sheets},
-                  {"area_bound_sheet_count", r.bound},
-                  {"part_count", r.parts},
-                  {"coverage", r.coverage},
-                  {"seam_count", r.seams},
-                  {"seams_without_tab_count", r.no_tab}});
-      }
-      out["rows"].push_back(j);
-    }
-    out["totals"] = {{"sheet_count", sheets},
-                     {"area_bound_sheet_count", bound},
-                     {"sheets_over_bound_ratio", ratio},
-                     {"runs_more_than_one_over_count", over},
-                     {"median_coverage", median(coverage)},
-                     // over the runs of 350-1,000 faces at 150 mm
-                     {"seams_without_tab_fraction", share},
-                     {"wall_s", seconds},
-                     {"cpu_s", cpu_seconds}};
-    std::cout << versioned(out).dump(2) << "\n";
-    return;
-  }
-  char no_tab[96] = "no mesh of 350-1,000 faces at 150 mm";
-  if (mid_seams > 0)
-    std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm", mid_no_tab,
-                  mid_seams, 100 * share);
-  std::printf(
-      "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
-      "%.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
-      sheets, bound, ratio, over, 100 * median(coverage), no_tab, seconds, cpu_seconds);
+  std::vector<Row> rows;
+  for (const fs::path& file : mesh_files(corpus))
+    if (a.filter.empty() || file.filename().string().find(a.filter) != std::string::npos)
+      bench_file(a, file, *paper, rows);
+  const Totals t = totals(rows);
+  if (a.json_out)
+    std::cout << versioned(bench_json(rows, t)).dump(2) << "\n";
+  else
+    print_totals(t);
 }
 
 }  // namespace foldkit::cli

@@ -65,12 +65,64 @@ layout::LayoutOptions estimate_options(layout::LayoutOptions o) {
   return o;
 }
 
+// The options of the `number`th layout tried: its progress stages carry the number, so that a stage
+// seen again is seen as another layout's and the counts may start over.
+layout::LayoutOptions numbered(const layout::LayoutOptions& o, int number) {
+  layout::LayoutOptions n = o;
+  if (o.progress)
+    n.progress = [report = o.progress, number](const layout::LayoutProgress& p) {
+      report({"layout " + std::to_string(number) + ", " + p.stage, p.done, p.total});
+    };
+  return n;
+}
+
+// Makes candidate partitions of one unfolding and lays them out, numbering the layouts it runs.
+class PartChooser {
+ public:
+  PartChooser(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o)
+      : mesh_(mesh), u_(u), o_(o), rough_(estimate_options(o)) {
+    po_.room_mm = layout::piece_room_mm(o);
+    po_.mm_per_unit = *o.size_mm / u.model_extent;
+  }
+
+  const unfold::PartOptions& part_options() const { return po_; }
+
+  Candidate make(double fraction, unfold::PartGrowth growth) {
+    po_.room_fraction = fraction;
+    po_.growth = growth;
+    Candidate c;
+    c.parts = split(mesh_, u_, po_);
+    c.hull_area = hull_area(c.parts.unfolding);
+    return c;
+  }
+
+  // The full layout, with labels and letters.
+  void lay_out(Candidate& c) {
+    c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
+    c.sheets = sheets_with_pieces(*c.layout);
+  }
+
+  // The cheap layout (estimate_options): sets c.sheets, returns the area the pieces and tabs take (mm²).
+  double estimate(Candidate& c) {
+    const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough_, ++layouts_));
+    c.sheets = sheets_with_pieces(r);
+    return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
+  }
+
+ private:
+  const unfold::Mesh& mesh_;
+  const unfold::Unfolding& u_;
+  const layout::LayoutOptions& o_;
+  const layout::LayoutOptions rough_;
+  unfold::PartOptions po_;
+  int layouts_ = 0;
+};
+
 // Parts and packing together: when the layout leaves more sheets than the area needs, the parts
 // alone on the last sheet are cut smaller (half, then a third of the room) and the whole is packed
 // again; smaller, rounder parts slip into the gaps of the sheets before. Kept when that saves a sheet.
-template <class Estimate, class LayOut>
 void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, unfold::PartOptions po,
-                        long bound, Estimate& estimate, LayOut& lay_out, Candidate& best) {
+                        long bound, PartChooser& chooser, Candidate& best) {
   constexpr double kFractions[] = {0.5, 0.35};
   constexpr int kFewMoreParts = 4;
   for (std::size_t t = 0; t < std::size(kFractions); ++t) {
@@ -94,80 +146,30 @@ void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o
     if (c.parts.unfolding.piece_count > most_parts ||
         c.parts.unfolding.piece_count == best.parts.unfolding.piece_count)
       continue;
-    estimate(c);
+    chooser.estimate(c);
     if (c.sheets >= best.sheets) continue;
-    lay_out(c);
+    chooser.lay_out(c);
     if (c.rank() < best.rank()) best = std::move(c);
   }
 }
 
-// The options of the `number`th layout tried: its progress stages carry the number, so that a stage
-// seen again is seen as another layout's and the counts may start over.
-layout::LayoutOptions numbered(const layout::LayoutOptions& o, int number) {
-  layout::LayoutOptions n = o;
-  if (o.progress)
-    n.progress = [report = o.progress, number](const layout::LayoutProgress& p) {
-      report({"layout " + std::to_string(number) + ", " + p.stage, p.done, p.total});
-    };
-  return n;
+// No partition needs fewer sheets than its area: reaching that bound ends the trials.
+long sheet_bound(const layout::LayoutOptions& o, double used_mm2) {
+  const Box2 area = layout::printable_area(o);
+  return std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
 }
 
-}  // namespace
-
-ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
-                         const layout::LayoutOptions& o) {
-  if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return {u, 0, 0, std::nullopt};
-  unfold::PartOptions po;
-  po.room_mm = layout::piece_room_mm(o);
-  po.mm_per_unit = *o.size_mm / u.model_extent;
-  const layout::LayoutOptions rough = estimate_options(o);
-
-  auto make = [&](double fraction, unfold::PartGrowth growth) {
-    po.room_fraction = fraction;
-    po.growth = growth;
-    Candidate c;
-    c.parts = split(mesh, u, po);
-    c.hull_area = hull_area(c.parts.unfolding);
-    return c;
-  };
-  int layouts = 0;
-  auto lay_out = [&](Candidate& c) {
-    c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o, ++layouts));
-    c.sheets = sheets_with_pieces(*c.layout);
-  };
-  using Clock = std::chrono::steady_clock;
-  Candidate first = make(1.0, unfold::PartGrowth::Tree);
-  if (first.parts.split_pieces == 0) {
-    lay_out(first);
-    return {std::move(first.parts.unfolding), 0, 0, std::move(first.layout)};
-  }
-
-  // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack
-  // poorly; smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged
-  // by packing it (the estimate), fewer sheets first, then fewer parts, then rounder parts.
-  auto estimate = [&](Candidate& c) {
-    const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough, ++layouts));
-    c.sheets = sheets_with_pieces(r);
-    return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
-  };
-  const auto first_start = Clock::now();
-  const double used_mm2 = estimate(first);
-  const auto trial_time = Clock::now() - first_start;
-  // No partition needs fewer sheets than its area: reaching that bound ends the trials.
-  const Box2 area = layout::printable_area(o);
-  const long bound =
-      std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
-
-  std::vector<Candidate> candidates;
-  candidates.push_back(std::move(first));
+// Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack poorly;
+// smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged by packing
+// it (the estimate). Large meshes try the first three only, so their layout stays fast; a count, not a
+// clock, so the same input gives the same parts. Under a time limit, another trial must leave room for
+// the full layouts (with labels, dearer).
+void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long bound, bool large,
+                    std::chrono::steady_clock::duration trial_time, std::vector<Candidate>& candidates) {
   const std::pair<double, unfold::PartGrowth> tries[] = {
       {1.0, unfold::PartGrowth::Round}, {0.7, unfold::PartGrowth::Tree},  {0.5, unfold::PartGrowth::Tree},
       {0.85, unfold::PartGrowth::Tree}, {0.7, unfold::PartGrowth::Round}, {0.5, unfold::PartGrowth::Round},
       {0.35, unfold::PartGrowth::Tree}};
-  // Large meshes try the first three only, with fewer full layouts and no re-split of the last
-  // sheet, so their layout stays fast; a count, not a clock, so the same input gives the same parts.
-  constexpr int kManyFaces = 1500;
-  const bool large = mesh.num_faces() > kManyFaces;
   const std::size_t trials = large ? 3 : std::size(tries);
   auto best_estimate = [&] {
     return std::min_element(candidates.begin(), candidates.end(),
@@ -175,20 +177,21 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   };
   for (std::size_t t = 0; t < trials; ++t) {
     if (best_estimate()->sheets <= bound) break;
-    // Under a time limit, another trial must leave room for the full layouts (with labels, dearer).
-    if (o.deadline && Clock::now() + 4 * trial_time > *o.deadline) break;
-    Candidate c = make(tries[t].first, tries[t].second);
-    estimate(c);
+    if (o.deadline && std::chrono::steady_clock::now() + 4 * trial_time > *o.deadline) break;
+    Candidate c = chooser.make(tries[t].first, tries[t].second);
+    chooser.estimate(c);
     candidates.push_back(std::move(c));
   }
+}
 
-  // The best estimate gets its full layout; while the next estimate could still beat the best full
-  // layout so far (the labels can cost a sheet), that one gets a full layout too (at most three in
-  // all, two for large meshes), and the best full layout wins.
+// The best estimate gets its full layout; while the next estimate could still beat the best full
+// layout so far (the labels can cost a sheet), that one gets a full layout too (at most three in
+// all, two for large meshes), and the best full layout wins.
+Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate> candidates, bool large) {
   const std::size_t full_layouts = large ? 2 : 3;
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
-  lay_out(candidates[0]);
+  chooser.lay_out(candidates[0]);
   for (std::size_t k = 1; k < std::min(candidates.size(), full_layouts); ++k) {
     // Parts do not change between estimate and layout: a candidate can win only on fewer sheets, or
     // as many with fewer parts.
@@ -197,11 +200,33 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     if (!(next.sheets < held.sheets || (next.sheets == held.sheets &&
                                         next.parts.unfolding.piece_count < held.parts.unfolding.piece_count)))
       break;
-    lay_out(candidates[k]);
+    chooser.lay_out(candidates[k]);
     if (candidates[k].rank() < candidates[0].rank()) std::swap(candidates[0], candidates[k]);
   }
-  Candidate best = std::move(candidates[0]);
-  if (!large) resplit_last_sheet(mesh, o, po, bound, estimate, lay_out, best);
+  return std::move(candidates[0]);
+}
+
+}  // namespace
+
+ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                         const layout::LayoutOptions& o) {
+  if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return {u, 0, 0, std::nullopt};
+  PartChooser chooser(mesh, u, o);
+  Candidate first = chooser.make(1.0, unfold::PartGrowth::Tree);
+  if (first.parts.split_pieces == 0) {
+    chooser.lay_out(first);
+    return {std::move(first.parts.unfolding), 0, 0, std::move(first.layout)};
+  }
+  const auto first_start = std::chrono::steady_clock::now();
+  const long bound = sheet_bound(o, chooser.estimate(first));
+  const auto trial_time = std::chrono::steady_clock::now() - first_start;
+  constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
+  const bool large = mesh.num_faces() > kManyFaces;
+  std::vector<Candidate> candidates;
+  candidates.push_back(std::move(first));
+  try_partitions(chooser, o, bound, large, trial_time, candidates);
+  Candidate best = best_full_layout(chooser, std::move(candidates), large);
+  if (!large) resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
   const int untouched = u.piece_count - best.parts.split_pieces;
   return {std::move(best.parts.unfolding), best.parts.split_pieces,
           best.parts.unfolding.piece_count - untouched, std::move(best.layout)};

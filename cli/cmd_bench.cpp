@@ -24,6 +24,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_layout.hpp"
+#include "choices.hpp"
+#include "cmd_bench.hpp"
 #include "commands.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
@@ -31,32 +33,16 @@
 #include "foldkit/unfold/unfolding.hpp"
 #include "json_report.hpp"
 #include "length_option.hpp"
+#include "unfold_options.hpp"
 
 namespace foldkit::cli {
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct BenchArgs {
-  int max_faces = 5000;
-  int min_faces = 0;
-  std::string methods = "mst,search,ga";
-  double time_limit_s = 120;
-  std::uint64_t seed = 1;
-  int threads = 0;
-  bool json_out = false;
-  std::string corpus;
-  std::string reference;
-  std::string filter;
-  // Child mode: unfold one mesh with one method and print one JSON line.
-  std::string one;
-  std::string method;
-};
-
 std::optional<unfold::Method> parse_method(const std::string& m) {
-  if (m == "mst") return unfold::Method::Mst;
-  if (m == "search") return unfold::Method::Search;
-  if (m == "ga") return unfold::Method::Ga;
+  for (const auto& [name, method] : unfold_methods())
+    if (m == name) return method;
   return std::nullopt;
 }
 
@@ -187,14 +173,11 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-void run_bench(const BenchArgs& a, const fs::path& corpus) {
-  fs::path reference = a.reference.empty() ? corpus.parent_path() / "reference" : fs::path(a.reference);
-  std::vector<std::string> methods = split(a.methods, ',');
-  for (const auto& m : methods)
-    if (!parse_method(m))
-      throw Error("--methods: unknown method '" + m + "' (mst, search, ga)", ExitCode::Usage);
+using CsvRows = std::vector<std::map<std::string, std::string>>;
 
-  // Meshes and their face counts, loaded here once (the runs load them again in their own process).
+// The corpus's meshes within the face bounds and --filter, with their face counts, fewest faces first
+// (loaded here once; the runs load them again in their own process).
+std::vector<std::pair<fs::path, int>> bench_meshes(const BenchArgs& a, const fs::path& corpus) {
   std::vector<std::pair<fs::path, int>> meshes;
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(corpus)) {
@@ -213,86 +196,98 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
     }
   }
   std::stable_sort(meshes.begin(), meshes.end(), [](auto& x, auto& y) { return x.second < y.second; });
+  return meshes;
+}
 
-  auto seed_rows = read_csv(reference / "seed_table1.csv");
-  auto blender_rows = read_csv(reference / "blender_paper_model.csv");
-
-  json rows = json::array();
-  // Header.
+std::string table_head(const std::vector<std::string>& methods) {
   std::ostringstream head;
-  if (!a.json_out) {
-    char b[256];
-    std::snprintf(b, sizeof b, "%-24s %6s", "mesh", "faces");
+  char b[256];
+  std::snprintf(b, sizeof b, "%-24s %6s", "mesh", "faces");
+  head << b;
+  for (const auto& m : methods) {
+    std::snprintf(b, sizeof b, " | %-6s %4s %8s %6s", m.c_str(), "pcs", "s", "MB");
     head << b;
-    for (const auto& m : methods) {
-      std::snprintf(b, sizeof b, " | %-6s %4s %8s %6s", m.c_str(), "pcs", "s", "MB");
-      head << b;
-    }
-    head << " | check | blender pcs     s | seed Table 1 (65/70/75%)";
-    std::cout << "foldkit bench: " << corpus.string() << ", up to " << a.max_faces << " faces, time limit "
-              << a.time_limit_s << " s, seed " << a.seed << ", one child process per run\n"
-              << head.str() << "\n"
-              << std::string(head.str().size(), '-') << std::endl;
   }
-  for (const auto& [path, faces] : meshes) {
-    json row{{"mesh", path.filename().string()}, {"face_count", faces}};
-    bool all_valid = true;
-    std::ostringstream line;
-    char b[256];
-    std::snprintf(b, sizeof b, "%-24s %6d", path.filename().string().c_str(), faces);
-    line << b;
-    for (const auto& m : methods) {
-      ChildResult c = run_child(a, path, m);
-      json r = c.row;
-      r["peak_mb"] = c.peak_mb;
-      bool ok = !r.contains("error") && r.value("valid", false);
-      all_valid &= ok;
-      row["results"][m] = r;
-      if (r.contains("error")) {
-        std::snprintf(b, sizeof b, " | %-6s %4s %8s %6.0f", m.c_str(), "err", "-", c.peak_mb);
-      } else {
-        std::snprintf(b, sizeof b, " | %-6s %4d %8.3f %6.1f", m.c_str(), r.value("piece_count", -1),
-                      r.value("unfold_s", 0.0), c.peak_mb);
-      }
-      line << b;
-    }
-    row["valid"] = all_valid;
-    line << " | " << (all_valid ? " ok  " : "FAIL ");
-    std::string rel = "meshes/" + path.filename().string();
-    std::string blender = "";
-    for (const auto& br : blender_rows) {
-      auto it = br.find("mesh");
-      if (it == br.end() || it->second != rel) continue;
-      if (br.at("pieces").empty()) {
-        // The add-on refused the mesh; say so rather than leave a blank.
-        row["blender"] = {{"error", br.count("error") ? br.at("error") : "refused"}};
-        std::snprintf(b, sizeof b, "%17s", "refused");
-      } else {
-        row["blender"] = {{"piece_count", std::stoi(br.at("pieces"))},
-                          {"unfold_s", std::stod(br.at("seconds"))}};
-        std::snprintf(b, sizeof b, "%11s %5s", br.at("pieces").c_str(), br.at("seconds").c_str());
-      }
-      blender = b;
-    }
-    line << " | " << (blender.empty() ? std::string(17, ' ') : blender);
-    for (const auto& sr : seed_rows) {
-      int sf = std::stoi(sr.at("faces"));
-      if (sr.at("model") != model_of(path) || std::abs(sf - faces) > 0.1 * sf) continue;
-      row["seed_table1"] = {
-          {"model", sr.at("model")},
-          {"face_count", sf},
-          {"piece_counts", {std::stoi(sr.at("n65")), std::stoi(sr.at("n70")), std::stoi(sr.at("n75"))}},
-          {"unfold_s", {std::stod(sr.at("t65")), std::stod(sr.at("t70")), std::stod(sr.at("t75"))}},
-          {"mst_piece_count", std::stoi(sr.at("mst_n"))}};
-      line << " | " << sr.at("model") << " " << sf << ": " << sr.at("n65") << "/" << sr.at("n70") << "/"
-           << sr.at("n75") << " pcs in " << sr.at("t65") << "/" << sr.at("t70") << "/" << sr.at("t75")
-           << " s";
-    }
-    rows.push_back(row);
-    if (!a.json_out) std::cout << line.str() << std::endl;
-  }
+  head << " | check | blender pcs     s | seed Table 1 (65/70/75%)";
+  return head.str();
+}
 
-  // Summary per method: one-piece share, medians by size band, peak memory, validity.
+// Blender's figures for `path` into row["blender"]; the table cell ("" when it has none).
+std::string blender_cell(const fs::path& path, const CsvRows& blender_rows, json& row) {
+  const std::string rel = "meshes/" + path.filename().string();
+  std::string blender = "";
+  char b[256];
+  for (const auto& br : blender_rows) {
+    auto it = br.find("mesh");
+    if (it == br.end() || it->second != rel) continue;
+    if (br.at("pieces").empty()) {
+      // The add-on refused the mesh; say so rather than leave a blank.
+      row["blender"] = {{"error", br.count("error") ? br.at("error") : "refused"}};
+      std::snprintf(b, sizeof b, "%17s", "refused");
+    } else {
+      row["blender"] = {{"piece_count", std::stoi(br.at("pieces"))},
+                        {"unfold_s", std::stod(br.at("seconds"))}};
+      std::snprintf(b, sizeof b, "%11s %5s", br.at("pieces").c_str(), br.at("seconds").c_str());
+    }
+    blender = b;
+  }
+  return blender;
+}
+
+// The seed paper's Table 1 figures for a model of about `faces` faces into row["seed_table1"]; the cells.
+std::string seed_cells(const fs::path& path, int faces, const CsvRows& seed_rows, json& row) {
+  std::ostringstream line;
+  for (const auto& sr : seed_rows) {
+    int sf = std::stoi(sr.at("faces"));
+    if (sr.at("model") != model_of(path) || std::abs(sf - faces) > 0.1 * sf) continue;
+    row["seed_table1"] = {
+        {"model", sr.at("model")},
+        {"face_count", sf},
+        {"piece_counts", {std::stoi(sr.at("n65")), std::stoi(sr.at("n70")), std::stoi(sr.at("n75"))}},
+        {"unfold_s", {std::stod(sr.at("t65")), std::stod(sr.at("t70")), std::stod(sr.at("t75"))}},
+        {"mst_piece_count", std::stoi(sr.at("mst_n"))}};
+    line << " | " << sr.at("model") << " " << sf << ": " << sr.at("n65") << "/" << sr.at("n70") << "/"
+         << sr.at("n75") << " pcs in " << sr.at("t65") << "/" << sr.at("t70") << "/" << sr.at("t75") << " s";
+  }
+  return line.str();
+}
+
+// One mesh: every method in its own child process, then the reference figures. Fills `row`, returns the
+// table line.
+std::string bench_mesh(const BenchArgs& a, const fs::path& path, int faces,
+                       const std::vector<std::string>& methods, const CsvRows& seed_rows,
+                       const CsvRows& blender_rows, json& row) {
+  row = json{{"mesh", path.filename().string()}, {"face_count", faces}};
+  bool all_valid = true;
+  std::ostringstream line;
+  char b[256];
+  std::snprintf(b, sizeof b, "%-24s %6d", path.filename().string().c_str(), faces);
+  line << b;
+  for (const auto& m : methods) {
+    ChildResult c = run_child(a, path, m);
+    json r = c.row;
+    r["peak_mb"] = c.peak_mb;
+    bool ok = !r.contains("error") && r.value("valid", false);
+    all_valid &= ok;
+    row["results"][m] = r;
+    if (r.contains("error")) {
+      std::snprintf(b, sizeof b, " | %-6s %4s %8s %6.0f", m.c_str(), "err", "-", c.peak_mb);
+    } else {
+      std::snprintf(b, sizeof b, " | %-6s %4d %8.3f %6.1f", m.c_str(), r.value("piece_count", -1),
+                    r.value("unfold_s", 0.0), c.peak_mb);
+    }
+    line << b;
+  }
+  row["valid"] = all_valid;
+  line << " | " << (all_valid ? " ok  " : "FAIL ");
+  const std::string blender = blender_cell(path, blender_rows, row);
+  line << " | " << (blender.empty() ? std::string(17, ' ') : blender);
+  line << seed_cells(path, faces, seed_rows, row);
+  return line.str();
+}
+
+// Per method: one-piece share, medians by size band, peak memory, validity.
+json bench_summary(const std::vector<std::string>& methods, const json& rows) {
   json summary;
   for (const auto& m : methods) {
     int one = 0, n = 0, valid = 0;
@@ -318,18 +313,10 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
       s["median_unfold_s"][band] = median(v);
     summary[m] = s;
   }
-  if (a.json_out) {
-    std::cout << versioned({{"corpus", corpus.string()},
-                            {"max_face_count", a.max_faces},
-                            {"time_limit_s", a.time_limit_s},
-                            {"seed", a.seed},
-                            {"rows", rows},
-                            {"summary", summary}})
-                     .dump(2)
-              << "\n";
-    return;
-  }
-  std::cout << std::string(head.str().size(), '-') << "\n";
+  return summary;
+}
+
+void print_summary(const std::vector<std::string>& methods, const json& summary) {
   for (const auto& m : methods) {
     const json& s = summary[m];
     std::cout << m << ": one piece " << s["one_piece_count"].get<int>() << "/" << s["mesh_count"].get<int>()
@@ -341,6 +328,46 @@ void run_bench(const BenchArgs& a, const fs::path& corpus) {
         std::cout << " " << band << " " << fmt("%.3f", v.get<double>());
     std::cout << "\n";
   }
+}
+
+// The unfolding table: rows as they finish (or JSON at the end), then the summary.
+void run_unfold_bench(const BenchArgs& a, const fs::path& corpus) {
+  fs::path reference = a.reference.empty() ? corpus.parent_path() / "reference" : fs::path(a.reference);
+  std::vector<std::string> methods = split(a.methods, ',');
+  for (const auto& m : methods)
+    if (!parse_method(m))
+      throw Error("--methods: unknown method '" + m + "' (" + joined(choice_names(unfold_methods())) + ")",
+                  ExitCode::Usage);
+  const auto meshes = bench_meshes(a, corpus);
+  const CsvRows seed_rows = read_csv(reference / "seed_table1.csv");
+  const CsvRows blender_rows = read_csv(reference / "blender_paper_model.csv");
+  const std::string head = table_head(methods);
+  if (!a.json_out)
+    std::cout << "foldkit bench: " << corpus.string() << ", up to " << a.max_faces << " faces, time limit "
+              << a.time_limit_s << " s, seed " << a.seed << ", one child process per run\n"
+              << head << "\n"
+              << std::string(head.size(), '-') << std::endl;
+  json rows = json::array();
+  for (const auto& [path, faces] : meshes) {
+    json row;
+    const std::string line = bench_mesh(a, path, faces, methods, seed_rows, blender_rows, row);
+    rows.push_back(row);
+    if (!a.json_out) std::cout << line << std::endl;
+  }
+  const json summary = bench_summary(methods, rows);
+  if (a.json_out) {
+    std::cout << versioned({{"corpus", corpus.string()},
+                            {"max_face_count", a.max_faces},
+                            {"time_limit_s", a.time_limit_s},
+                            {"seed", a.seed},
+                            {"rows", rows},
+                            {"summary", summary}})
+                     .dump(2)
+              << "\n";
+    return;
+  }
+  std::cout << std::string(head.size(), '-') << "\n";
+  print_summary(methods, summary);
 }
 
 // The corpus named on the command line, else ../shared/meshes of a developer checkout run from the
@@ -357,6 +384,22 @@ fs::path corpus_folder(const std::string& given) {
 }
 
 }  // namespace
+
+void run_bench(const BenchArgs& a) {
+  if (!a.one.empty()) return run_one(a);
+  const fs::path corpus = corpus_folder(a.corpus);
+  if (!a.layout) return run_unfold_bench(a, corpus);
+  LayoutBenchArgs l;
+  l.corpus = corpus.string();
+  l.min_faces = a.min_faces;
+  if (a.max_faces_given) l.max_faces = a.max_faces;
+  l.filter = a.filter;
+  if (a.time_limit_given) l.time_limit_s = a.time_limit_s;
+  l.json_out = a.json_out;
+  l.nest2d = a.nest2d;
+  if (!a.sizes_mm.empty()) l.sizes_mm = a.sizes_mm;
+  run_layout_bench(l);
+}
 
 void setup_bench(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
@@ -378,34 +421,21 @@ void setup_bench(CLI::App& app) {
   cmd->add_option("--reference", a->reference,
                   "Folder of the reference CSVs (default CORPUS/../reference; none: no reference columns)");
   cmd->add_option("--filter", a->filter, "Only meshes whose file name contains this text");
-  auto layout = std::make_shared<bool>(false);
   cmd->add_flag(
-      "--layout", *layout,
+      "--layout", a->layout,
       "Benchmark the layout instead: sheets, area bound, parts, coverage and seams without a tab per "
       "mesh at 150 and 250 mm on A4 (meshes up to --max-faces, lowpoly/ included)");
-  auto sizes = std::make_shared<std::vector<double>>();
-  cmd->add_option("--sizes", *sizes, "With --layout: model sizes in mm (default 150 250)")
+  cmd->add_option("--sizes", a->sizes_mm, "With --layout: model sizes in mm (default 150 250)")
       ->delimiter(',')
       ->check(number_in(1, 10000, "mm"));
-  auto nest2d = std::make_shared<bool>(false);
-  cmd->add_flag("--nest2d", *nest2d, "With --layout: pack with libnest2d instead of foldkit's packer");
+  cmd->add_flag("--nest2d", a->nest2d, "With --layout: pack with libnest2d instead of foldkit's packer");
   // Internal: what each child process runs.
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");
-  cmd->callback([a, layout, sizes, nest2d, cmd] {
-    if (!a->one.empty()) return run_one(*a);
-    const fs::path corpus = corpus_folder(a->corpus);
-    if (!*layout) return run_bench(*a, corpus);
-    LayoutBenchArgs l;
-    l.corpus = corpus.string();
-    l.min_faces = a->min_faces;
-    if (cmd->count("--max-faces") > 0) l.max_faces = a->max_faces;
-    l.filter = a->filter;
-    if (cmd->count("--time-limit") > 0) l.time_limit_s = a->time_limit_s;
-    l.json_out = a->json_out;
-    l.nest2d = *nest2d;
-    if (!sizes->empty()) l.sizes_mm = *sizes;
-    run_layout_bench(l);
+  cmd->callback([a, cmd] {
+    a->max_faces_given = cmd->count("--max-faces") > 0;
+    a->time_limit_given = cmd->count("--time-limit") > 0;
+    run_bench(*a);
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cmd_calibrate.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/calibration.hpp"
 #include "foldkit/devices/file_transport.hpp"
@@ -30,14 +31,6 @@
 
 namespace foldkit::cli {
 namespace {
-
-struct CalibrateArgs {
-  std::string device, media = "copy-80", mat, paper = "A4";
-  std::vector<std::string> profiles;
-  std::string pdf, job, preview;
-  std::string offset;
-  bool reset = false, verify = false, show = false, json = false;
-};
 
 // One signed length through the one length parser: "-1.2mm" is minus "1.2mm".
 std::optional<double> signed_length_mm(const std::string& text) {
@@ -227,6 +220,20 @@ void write_page_and_job(const CalibrateArgs& args, const devices::DeviceProfile&
 
 }  // namespace
 
+void run_calibrate(const CalibrateArgs& args) {
+  const devices::ProfileSet profiles = load_cli_profiles(args.profiles);
+  const devices::DeviceProfile& device = profiles.device(args.device);
+  if (args.show) {
+    show_offset(args, device);
+    return;
+  }
+  if (!args.offset.empty() || args.reset) {
+    store_offset(args, device);
+    return;
+  }
+  write_page_and_job(args, device, profiles.medium(args.media));
+}
+
 void setup_calibrate(CLI::App& app) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* cmd = app.add_subcommand(
@@ -252,19 +259,7 @@ void setup_calibrate(CLI::App& app) {
   cmd->add_flag("--show", args->show, "Say which correction is stored for this device")->excludes(offset);
   cmd->add_flag("--verify", args->verify, "Cut the page with the stored correction applied, to check it");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
-  cmd->callback([args] {
-    const devices::ProfileSet profiles = load_cli_profiles(args->profiles);
-    const devices::DeviceProfile& device = profiles.device(args->device);
-    if (args->show) {
-      show_offset(*args, device);
-      return;
-    }
-    if (!args->offset.empty() || args->reset) {
-      store_offset(*args, device);
-      return;
-    }
-    write_page_and_job(*args, device, profiles.medium(args->media));
-  });
+  cmd->callback([args] { run_calibrate(*args); });
 }
 
 }  // namespace foldkit::cli

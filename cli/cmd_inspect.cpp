@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cmd_inspect.hpp"
 #include "commands.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/mesh_stats.hpp"
@@ -57,12 +58,6 @@ std::vector<int> faces_per_material(const unfold::Mesh& m) {
     if (mat >= 0) count[mat] += 1;
   return count;
 }
-
-struct InspectArgs {
-  std::string mesh;
-  bool json = false;
-  std::optional<int> max_faces;
-};
 
 nlohmann::json to_json(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) {
   nlohmann::json j;
@@ -179,6 +174,18 @@ std::string table(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) 
 
 }  // namespace
 
+void run_inspect(const InspectArgs& args) {
+  unfold::LoadOptions options;
+  options.max_faces = args.max_faces;
+  const unfold::LoadedMesh loaded = unfold::load_mesh(args.mesh, options);
+  const unfold::MeshStats stats = unfold::compute_mesh_stats(loaded.mesh);
+  if (args.json) {
+    std::cout << to_json(loaded, stats).dump(2) << "\n";
+  } else {
+    std::cout << table(loaded, stats);
+  }
+}
+
 void setup_inspect(CLI::App& app) {
   auto args = std::make_shared<InspectArgs>();
   CLI::App* cmd = app.add_subcommand("inspect", "Load a mesh and report its topology and curvature");
@@ -186,17 +193,7 @@ void setup_inspect(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->add_option("--max-faces", args->max_faces, "Decimate to at most N faces first")
       ->check(number_in(4, 100e6, "faces"));
-  cmd->callback([args] {
-    unfold::LoadOptions options;
-    options.max_faces = args->max_faces;
-    const unfold::LoadedMesh loaded = unfold::load_mesh(args->mesh, options);
-    const unfold::MeshStats stats = unfold::compute_mesh_stats(loaded.mesh);
-    if (args->json) {
-      std::cout << to_json(loaded, stats).dump(2) << "\n";
-    } else {
-      std::cout << table(loaded, stats);
-    }
-  });
+  cmd->callback([args] { run_inspect(*args); });
 }
 
 }  // namespace foldkit::cli

@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "choices.hpp"
+#include "cmd_make.hpp"
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/atomic_file.hpp"
@@ -29,21 +31,6 @@
 
 namespace foldkit::cli {
 namespace {
-
-struct MakeArgs {
-  std::string mesh;
-  std::string output;
-  std::string format;
-  std::string bundle;
-  double dpi = 150;
-  bool json = false;
-  bool quiet = false;
-  bool no_guide = false;
-  std::string mountain = "dash-dot", valley = "dashed";
-  UnfoldCliOptions unfold;
-  LayoutCliOptions layout;
-  ColourCliOptions colour;
-};
 
 // Dash patterns (mm on, off, …) by name.
 const std::map<std::string, std::vector<double>>& fold_styles() {
@@ -63,6 +50,9 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"tab_area_mm2", s.tab_area_mm2}};
 }
 
+// What make writes: --format's choices and the extensions -o is known by.
+const std::vector<std::string> kOutputFormats = {"pdf", "svg", "png", "dxf"};
+
 // The format named by --format, else by the output's extension ("-": PDF). Throws a usage error.
 std::string output_format(const std::string& output, const std::string& format) {
   if (!format.empty()) return format;
@@ -70,9 +60,12 @@ std::string output_format(const std::string& output, const std::string& format) 
   std::string ext = std::filesystem::path(output).extension().string();
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".pdf" || ext == ".svg" || ext == ".png" || ext == ".dxf") return ext.substr(1);
-  throw Error("-o " + output + ": output must end in .pdf, .svg, .png or .dxf (or give --format)",
-              ExitCode::Usage);
+  std::string known;  // ".pdf, .svg, .png or .dxf"
+  for (std::size_t i = 0; i < kOutputFormats.size(); ++i) {
+    if (ext == "." + kOutputFormats[i]) return kOutputFormats[i];
+    known += (i == 0 ? "" : i + 1 == kOutputFormats.size() ? " or " : ", ") + ("." + kOutputFormats[i]);
+  }
+  throw Error("-o " + output + ": output must end in " + known + " (or give --format)", ExitCode::Usage);
 }
 
 // Sheets an earlier, longer run left under the same name would be taken for part of this one.
@@ -177,7 +170,192 @@ std::string label_remedy(const layout::LayoutResult& r, int faces) {
   return line;
 }
 
+// What the parser cannot check alone; the output format. Throws a usage error.
+std::string check_make_args(const MakeArgs& args) {
+  if (args.output.empty() && args.bundle.empty())
+    throw Error("make needs -o FILE or --bundle DIR (or both)", ExitCode::Usage);
+  const std::string format = args.output.empty() ? "" : output_format(args.output, args.format);
+  if (args.output == "-" && args.json)
+    throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
+  return format;
+}
+
+devices::RenderOptions render_options(const MakeArgs& args, const std::string& format,
+                                      const layout::LayoutResult& r) {
+  devices::RenderOptions render;
+  render.format = format;
+  render.png_dpi = args.dpi;
+  render.mountain.dash_mm = fold_styles().at(args.mountain);
+  render.valley.dash_mm = fold_styles().at(args.valley);
+  const bool coloured =
+      std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
+  apply_colour_render_options(args.colour, coloured, render);
+  return render;
+}
+
+// What the sheets were written to: every file, and how many of them are sheets (not the guide).
+struct Written {
+  std::vector<std::filesystem::path> files;
+  std::size_t sheet_files = 0;
+  int guide_pages = 0;
+};
+
+// The sheets to -o, with the guide as the PDF's last page or as NAME-guide.svg/.png beside them.
+Written write_output(const MakeArgs& args, const std::vector<Sheet>& sheets,
+                     const std::optional<Sheet>& guide, bool guide_beside_output,
+                     const devices::RenderOptions& render, const devices::StrokeFont* font) {
+  Written w;
+  if (!guide || !guide_beside_output) {
+    w.files = write_sheets(sheets, args.output, render, font);
+    w.sheet_files = w.files.size();
+    return w;
+  }
+  w.guide_pages = 1;
+  if (render.format == "pdf") {
+    // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
+    std::vector<Sheet> pages = sheets;
+    pages.push_back(*guide);
+    w.files = write_sheets(pages, args.output, render, font);
+    w.sheet_files = w.files.size();
+    return w;
+  }
+  w.files = write_sheets(sheets, args.output, render, font);
+  w.sheet_files = w.files.size();
+  std::filesystem::path guide_path = args.output;
+  guide_path.replace_filename(guide_path.stem().string() + "-guide" + guide_path.extension().string());
+  const auto written = devices::render_sheets({*guide}, guide_path, render);
+  w.files.insert(w.files.end(), written.begin(), written.end());
+  return w;
+}
+
+std::vector<std::string> make_notes(const PipelineRun& run, const std::string& stale) {
+  const layout::LayoutResult& r = run.layout;
+  std::vector<std::string> notes = run.unfolded.loaded.notes;
+  notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
+  notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+  if (const std::string remedy = label_remedy(r, run.unfolded.result.unfolding.num_faces()); !remedy.empty())
+    notes.push_back(remedy);
+  if (!stale.empty()) notes.push_back(stale);
+  return notes;
+}
+
+nlohmann::json make_json(const MakeArgs& args, const PipelineRun& run,
+                         const layout::LayoutOptions& layout_options, const Written& w,
+                         const std::vector<std::string>& notes) {
+  const layout::LayoutResult& r = run.layout;
+  const unfold::Unfolding& u = run.unfolded.result.unfolding;
+  nlohmann::json sheets = nlohmann::json::array();
+  for (const layout::SheetStats& s : r.sheet_stats)
+    sheets.push_back(stats_json(s));
+  nlohmann::json outputs = nlohmann::json::array();
+  for (const auto& f : w.files)
+    outputs.push_back(f.string());
+  nlohmann::json assembly = nlohmann::json::array();
+  for (const layout::AssemblyStep& step : r.assembly)
+    assembly.push_back({{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
+  nlohmann::json j{{"file", args.mesh},
+                   {"face_count", u.num_faces()},
+                   {"piece_count", u.piece_count},
+                   {"seam_count", u.seam_count()},
+                   {"method", run.unfolded.result.method},
+                   {"size_mm", r.size_mm},
+                   {"scale_mm_per_unit", r.scale_mm_per_unit},
+                   {"paper_mm", {layout_options.paper_mm.x, layout_options.paper_mm.y}},
+                   {"sheet_count", r.sheets.size()},
+                   {"sheets", sheets},
+                   {"overall", stats_json(r.overall)},
+                   {"unfold_s", run.unfolded.result.seconds},
+                   {"layout_s", run.layout_seconds},
+                   {"outputs", outputs},
+                   {"notes", notes},
+                   {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
+                   {"labels_crossing_lines_count", r.label_audit.crossing_lines},
+                   {"guide_page_count", w.guide_pages},
+                   {"labels_touching_count", r.label_audit.touching},
+                   {"labels_turned_count", r.label_audit.turned},
+                   {"letters_crossing_lines_count", r.label_audit.letters_crossing_lines},
+                   {"labels_without_room_count", r.labels_without_room},
+                   {"dropped_tab_seams", r.dropped_tab_seams}};
+  if (!r.assembly.empty()) j["assembly_steps"] = assembly;
+  return j;
+}
+
+// The notes on stderr and one summary line: on stdout, or on stderr when the sheets are on stdout.
+void print_make_summary(const MakeArgs& args, const PipelineRun& run, const Written& w,
+                        const std::vector<std::string>& notes) {
+  const layout::LayoutResult& r = run.layout;
+  const unfold::Unfolding& u = run.unfolded.result.unfolding;
+  for (const auto& n : notes)
+    std::cerr << "note: " << n << "\n";
+  // With only --bundle, its README.txt (which lists the rest) stands for the files written.
+  const std::string shown =
+      args.output.empty() ? (std::filesystem::path(args.bundle) / "README.txt").string() : args.output;
+  // With -o - the sheets are on standard output: the summary must not be mixed into them.
+  std::fprintf(
+      args.output == "-" ? stderr : stdout,
+      "%s: %d faces -> %d piece%s (%s) -> %zu sheet%s at %.0f mm, coverage %.0f%%, %d tabs (%d dropped) -> "
+      "%s%s\n",
+      args.mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",
+      run.unfolded.result.method.c_str(), r.sheets.size(), r.sheets.size() == 1 ? "" : "s", r.size_mm,
+      100 * r.overall.coverage, r.overall.tabs, r.overall.dropped_tabs, shown.c_str(),
+      w.files.size() > 1 ? (" (+" + std::to_string(w.files.size() - 1) + " more)").c_str() : "");
+}
+
 }  // namespace
+
+void run_make(MakeArgs args) {
+  const std::string format = check_make_args(args);
+  const std::vector<std::filesystem::path> inputs{args.mesh, args.unfold.cut_file, args.unfold.keep_file};
+  refuse_output_over_inputs("-o", args.output, inputs);
+  finish_unfold_options(args.unfold);
+  layout::LayoutOptions layout_options = to_layout_options(args.layout);
+  layout_options.model_name = std::filesystem::path(args.mesh).stem().string();
+  if (format == "png") check_png_raster(layout_options.paper_mm, args.dpi);  // before minutes of work
+  if (!args.bundle.empty())
+    devices::check_bundle_sheet_size(layout_options.paper_mm, kBundleDpi, args.bundle);
+  // DXF labels are pen strokes: a missing font is found out before the pipeline, not after it.
+  std::optional<devices::StrokeFont> font;
+  if (format == "dxf" || !args.bundle.empty()) font = load_label_font();
+  const devices::StrokeFont* label_font = font ? &*font : nullptr;
+  ProgressLine line(!args.quiet);
+  const PipelineRun run =
+      load_unfold_layout(args.mesh, args.unfold, layout_options, line, to_fill_options(args.colour));
+  const layout::LayoutResult& r = run.layout;
+  if (format != "pdf") {
+    for (std::size_t i = 1; i < r.sheets.size(); ++i)
+      refuse_output_over_inputs("-o", sheet_output_path(args.output, i), inputs);
+  }
+  const devices::RenderOptions render = render_options(args, format, r);
+  line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
+  const bool pdf = format == "pdf", picture = format == "svg" || format == "png";
+  // A guide beside SVG/PNG sheets is one more file, which standard output cannot hold.
+  const bool guide_beside_output = !args.output.empty() && (pdf || (picture && args.output != "-"));
+  std::optional<Sheet> guide;
+  if (!args.no_guide && (guide_beside_output || !args.bundle.empty())) {
+    line.update("drawing the assembly guide");
+    layout::GuideOptions guide_options;
+    guide_options.paper_mm = layout_options.paper_mm;
+    guide_options.margin_mm = layout_options.margin_mm;
+    guide_options.model_name = layout_options.model_name;
+    guide = layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
+  }
+  Written w;
+  if (!args.output.empty()) w = write_output(args, r.sheets, guide, guide_beside_output, render, label_font);
+  if (!args.bundle.empty()) {
+    line.update("writing the bundle");
+    const auto bundled = write_bundle(r.sheets, guide ? &*guide : nullptr, args.mesh, args.bundle, render,
+                                      r.size_mm, label_font);
+    w.files.insert(w.files.end(), bundled.begin(), bundled.end());
+  }
+  line.clear();
+  const std::string stale =
+      format == "pdf" || format.empty() ? "" : remove_stale_files(args.output, w.sheet_files);
+  const std::vector<std::string> notes = make_notes(run, stale);
+  if (args.json)
+    std::cout << versioned(make_json(args, run, layout_options, w, notes)).dump(2) << "\n";
+  else
+    print_make_summary(args, run, w, notes);
+}
 
 void setup_make(CLI::App& app) {
   auto args = std::make_shared<MakeArgs>();
@@ -189,7 +367,7 @@ void setup_make(CLI::App& app) {
                   "standard output");
   cmd->add_option("--format", args->format,
                   "Output format when -o has no such extension (default for -: pdf)")
-      ->check(CLI::IsMember({"pdf", "svg", "png", "dxf"}));
+      ->check(CLI::IsMember(kOutputFormats));
   cmd->add_option(
       "--bundle", args->bundle,
       "Also (or instead of -o) write a hand-off folder for Silhouette Studio, Cricut Design Space "
@@ -197,11 +375,12 @@ void setup_make(CLI::App& app) {
   cmd->add_option("--dpi", args->dpi, "Resolution of PNG previews")
       ->check(number_in(10, 2400, "dpi"))
       ->capture_default_str();
-  auto style_names = CLI::IsMember(fold_styles());
-  cmd->add_option("--mountain", args->mountain, "Mountain fold style: dash-dot, dashed, dotted, solid")
+  const std::vector<std::string> styles = choice_names(fold_styles());
+  auto style_names = CLI::IsMember(styles);
+  cmd->add_option("--mountain", args->mountain, "Mountain fold style: " + joined(styles))
       ->check(style_names)
       ->capture_default_str();
-  cmd->add_option("--valley", args->valley, "Valley fold style: dash-dot, dashed, dotted, solid")
+  cmd->add_option("--valley", args->valley, "Valley fold style: " + joined(styles))
       ->check(style_names)
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
@@ -212,151 +391,7 @@ void setup_make(CLI::App& app) {
   add_layout_options(*cmd, args->layout);
   add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);
-  cmd->callback([args] {
-    if (args->output.empty() && args->bundle.empty())
-      throw Error("make needs -o FILE or --bundle DIR (or both)", ExitCode::Usage);
-    const std::string format = args->output.empty() ? "" : output_format(args->output, args->format);
-    const bool to_stdout = args->output == "-";
-    if (to_stdout && args->json)
-      throw Error("--json and the output would both go to standard output (-): choose one", ExitCode::Usage);
-    const std::vector<std::filesystem::path> inputs{args->mesh, args->unfold.cut_file,
-                                                    args->unfold.keep_file};
-    refuse_output_over_inputs("-o", args->output, inputs);
-    finish_unfold_options(args->unfold);
-    layout::LayoutOptions layout_options = to_layout_options(args->layout);
-    layout_options.model_name = std::filesystem::path(args->mesh).stem().string();
-    if (format == "png") check_png_raster(layout_options.paper_mm, args->dpi);  // before minutes of work
-    if (!args->bundle.empty())
-      devices::check_bundle_sheet_size(layout_options.paper_mm, kBundleDpi, args->bundle);
-    // DXF labels are pen strokes: a missing font is found out before the pipeline, not after it.
-    std::optional<devices::StrokeFont> font;
-    if (format == "dxf" || !args->bundle.empty()) font = load_label_font();
-    const devices::StrokeFont* label_font = font ? &*font : nullptr;
-    ProgressLine line(!args->quiet);
-    PipelineRun run =
-        load_unfold_layout(args->mesh, args->unfold, layout_options, line, to_fill_options(args->colour));
-    const layout::LayoutResult& r = run.layout;
-
-    if (format != "pdf") {
-      for (std::size_t i = 1; i < r.sheets.size(); ++i)
-        refuse_output_over_inputs("-o", sheet_output_path(args->output, i), inputs);
-    }
-    devices::RenderOptions render;
-    render.format = format;
-    render.png_dpi = args->dpi;
-    render.mountain.dash_mm = fold_styles().at(args->mountain);
-    render.valley.dash_mm = fold_styles().at(args->valley);
-    const bool coloured =
-        std::any_of(r.sheets.begin(), r.sheets.end(), [](const Sheet& s) { return !s.fills.empty(); });
-    apply_colour_render_options(args->colour, coloured, render);
-    line.update("rendering " + std::to_string(r.sheets.size()) + " sheets");
-    std::vector<std::filesystem::path> files;
-    int guide_pages = 0;
-    std::size_t sheet_files = 0;
-    const bool pdf = format == "pdf", picture = format == "svg" || format == "png";
-    // A guide beside SVG/PNG sheets is one more file, which standard output cannot hold.
-    const bool guide_beside_output = !args->output.empty() && (pdf || (picture && !to_stdout));
-    std::optional<Sheet> guide;
-    if (!args->no_guide && (guide_beside_output || !args->bundle.empty())) {
-      line.update("drawing the assembly guide");
-      layout::GuideOptions guide_options;
-      guide_options.paper_mm = layout_options.paper_mm;
-      guide_options.margin_mm = layout_options.margin_mm;
-      guide_options.model_name = layout_options.model_name;
-      guide = layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
-    }
-    if (!args->output.empty()) {
-      if (guide && guide_beside_output) {
-        guide_pages = 1;
-        if (pdf) {
-          // The guide is the last page, so that page k is sheet k as the labels' "p3" say.
-          std::vector<Sheet> pages = r.sheets;
-          pages.push_back(*guide);
-          files = write_sheets(pages, args->output, render, label_font);
-          sheet_files = files.size();
-        } else {
-          files = write_sheets(r.sheets, args->output, render, label_font);
-          sheet_files = files.size();
-          std::filesystem::path guide_path = args->output;
-          guide_path.replace_filename(guide_path.stem().string() + "-guide" +
-                                      guide_path.extension().string());
-          const auto written = devices::render_sheets({*guide}, guide_path, render);
-          files.insert(files.end(), written.begin(), written.end());
-        }
-      } else {
-        files = write_sheets(r.sheets, args->output, render, label_font);
-        sheet_files = files.size();
-      }
-    }
-    if (!args->bundle.empty()) {
-      line.update("writing the bundle");
-      const auto bundled = write_bundle(r.sheets, guide ? &*guide : nullptr, args->mesh, args->bundle, render,
-                                        r.size_mm, label_font);
-      files.insert(files.end(), bundled.begin(), bundled.end());
-    }
-    line.clear();
-    const std::string stale =
-        format == "pdf" || format.empty() ? "" : remove_stale_files(args->output, sheet_files);
-
-    const unfold::Unfolding& u = run.unfolded.result.unfolding;
-    std::vector<std::string> notes = run.unfolded.loaded.notes;
-    notes.insert(notes.end(), run.unfolded.result.notes.begin(), run.unfolded.result.notes.end());
-    notes.insert(notes.end(), r.notes.begin(), r.notes.end());
-    if (const std::string remedy = label_remedy(r, u.num_faces()); !remedy.empty()) notes.push_back(remedy);
-    if (!stale.empty()) notes.push_back(stale);
-    if (args->json) {
-      nlohmann::json sheets = nlohmann::json::array();
-      for (const layout::SheetStats& s : r.sheet_stats)
-        sheets.push_back(stats_json(s));
-      nlohmann::json outputs = nlohmann::json::array();
-      for (const auto& f : files)
-        outputs.push_back(f.string());
-      nlohmann::json assembly = nlohmann::json::array();
-      for (const layout::AssemblyStep& step : r.assembly)
-        assembly.push_back(
-            {{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
-      nlohmann::json j{{"file", args->mesh},
-                       {"face_count", u.num_faces()},
-                       {"piece_count", u.piece_count},
-                       {"seam_count", u.seam_count()},
-                       {"method", run.unfolded.result.method},
-                       {"size_mm", r.size_mm},
-                       {"scale_mm_per_unit", r.scale_mm_per_unit},
-                       {"paper_mm", {layout_options.paper_mm.x, layout_options.paper_mm.y}},
-                       {"sheet_count", r.sheets.size()},
-                       {"sheets", sheets},
-                       {"overall", stats_json(r.overall)},
-                       {"unfold_s", run.unfolded.result.seconds},
-                       {"layout_s", run.layout_seconds},
-                       {"outputs", outputs},
-                       {"notes", notes},
-                       {"parts", parts_json(run.unfolded.loaded.mesh, u, r)},
-                       {"labels_crossing_lines_count", r.label_audit.crossing_lines},
-                       {"guide_page_count", guide_pages},
-                       {"labels_touching_count", r.label_audit.touching},
-                       {"labels_turned_count", r.label_audit.turned},
-                       {"letters_crossing_lines_count", r.label_audit.letters_crossing_lines},
-                       {"labels_without_room_count", r.labels_without_room},
-                       {"dropped_tab_seams", r.dropped_tab_seams}};
-      if (!r.assembly.empty()) j["assembly_steps"] = assembly;
-      std::cout << versioned(j).dump(2) << "\n";
-      return;
-    }
-    for (const auto& n : notes)
-      std::cerr << "note: " << n << "\n";
-    // With only --bundle, its README.txt (which lists the rest) stands for the files written.
-    const std::string shown =
-        args->output.empty() ? (std::filesystem::path(args->bundle) / "README.txt").string() : args->output;
-    // With -o - the sheets are on standard output: the summary must not be mixed into them.
-    std::fprintf(
-        to_stdout ? stderr : stdout,
-        "%s: %d faces -> %d piece%s (%s) -> %zu sheet%s at %.0f mm, coverage %.0f%%, %d tabs (%d dropped) -> "
-        "%s%s\n",
-        args->mesh.c_str(), u.num_faces(), u.piece_count, u.piece_count == 1 ? "" : "s",
-        run.unfolded.result.method.c_str(), r.sheets.size(), r.sheets.size() == 1 ? "" : "s", r.size_mm,
-        100 * r.overall.coverage, r.overall.tabs, r.overall.dropped_tabs, shown.c_str(),
-        files.size() > 1 ? (" (+" + std::to_string(files.size() - 1) + " more)").c_str() : "");
-  });
+  cmd->callback([args] { run_make(*args); });
 }
 
 }  // namespace foldkit::cli

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cmd_profiles.hpp"
 #include "commands.hpp"
 #include "foldkit/devices/profile.hpp"
 #include "json_report.hpp"
@@ -12,11 +13,6 @@
 
 namespace foldkit::cli {
 namespace {
-
-struct ProfilesArgs {
-  std::vector<std::string> files;
-  bool json = false;
-};
 
 std::string tools(const devices::DeviceProfile& d) {
   std::string out;
@@ -60,62 +56,64 @@ std::string settings(const devices::ToolSettings& s) {
 
 }  // namespace
 
+void run_profiles(const ProfilesArgs& args) {
+  const devices::ProfileSet set = load_cli_profiles(args.files);
+  if (args.json) {
+    nlohmann::json devs = nlohmann::json::array(), media = nlohmann::json::array();
+    for (const auto& d : set.devices) {
+      nlohmann::json mats = nlohmann::json::array();
+      for (const auto& m : d.mats)
+        mats.push_back({{"id", m.id}, {"width_mm", m.width_mm}, {"length_mm", m.length_mm}});
+      devs.push_back({{"id", d.id},
+                      {"name", d.name},
+                      {"protocol", devices::protocol_name(d.protocol)},
+                      {"vendor", usb_json(d.usb_vendor, d)},
+                      {"product", usb_json(d.usb_product, d)},
+                      {"area_mm", {d.area_width_mm, d.area_max_length_mm}},
+                      {"mats", mats},
+                      {"holder_count", d.holders},
+                      {"tools", tools_json(d)},
+                      {"regmarks_supported", d.regmarks.supported},
+                      {"sources", d.sources},
+                      {"file", d.file.string()}});
+    }
+    for (const auto& m : set.media)
+      media.push_back({{"id", m.id},
+                       {"name", m.name},
+                       {"thickness_mm", m.thickness_mm},
+                       {"cut", settings_json(m.cut)},
+                       {"score", settings_json(m.score)},
+                       {"draw", settings_json(m.draw)},
+                       {"file", m.file.string()}});
+    nlohmann::json dirs = nlohmann::json::array();
+    for (const auto& dir : cli_profile_dirs())
+      dirs.push_back(dir.string());
+    std::cout << versioned({{"profile_dirs", dirs}, {"devices", devs}, {"media", media}}).dump(2) << "\n";
+    return;
+  }
+  std::printf("Devices (--device):\n  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", "ID", "NAME", "LANG", "USB",
+              "AREA mm", "REGMARKS", "TOOLS (kind@holder)");
+  for (const auto& d : set.devices) {
+    char area[32];
+    std::snprintf(area, sizeof area, "%.1f x %.0f", d.area_width_mm, d.area_max_length_mm);
+    std::printf("  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", d.id.c_str(), d.name.c_str(),
+                devices::protocol_name(d.protocol), usb(d).c_str(), area, d.regmarks.supported ? "yes" : "no",
+                tools(d).c_str());
+  }
+  std::printf("\nMedia (--media):\n  %-15s %-20s %-24s %-24s %s\n", "ID", "NAME", "CUT", "SCORE", "FOLDS");
+  for (const auto& m : set.media) {
+    std::printf("  %-15s %-20s %-24s %-24s %s\n", m.id.c_str(), m.name.c_str(), settings(m.cut).c_str(),
+                settings(m.score).c_str(),
+                m.fold_method ? devices::fold_method_name(*m.fold_method) : "device default");
+  }
+}
+
 void setup_profiles(CLI::App& app) {
   auto args = std::make_shared<ProfilesArgs>();
   CLI::App* cmd = app.add_subcommand("profiles", "List the cutting-plotter device and media profiles");
   add_profile_options(*cmd, args->files);
   cmd->add_flag("--json", args->json, "Print JSON on stdout");
-  cmd->callback([args] {
-    const devices::ProfileSet set = load_cli_profiles(args->files);
-    if (args->json) {
-      nlohmann::json devs = nlohmann::json::array(), media = nlohmann::json::array();
-      for (const auto& d : set.devices) {
-        nlohmann::json mats = nlohmann::json::array();
-        for (const auto& m : d.mats)
-          mats.push_back({{"id", m.id}, {"width_mm", m.width_mm}, {"length_mm", m.length_mm}});
-        devs.push_back({{"id", d.id},
-                        {"name", d.name},
-                        {"protocol", devices::protocol_name(d.protocol)},
-                        {"vendor", usb_json(d.usb_vendor, d)},
-                        {"product", usb_json(d.usb_product, d)},
-                        {"area_mm", {d.area_width_mm, d.area_max_length_mm}},
-                        {"mats", mats},
-                        {"holder_count", d.holders},
-                        {"tools", tools_json(d)},
-                        {"regmarks_supported", d.regmarks.supported},
-                        {"sources", d.sources},
-                        {"file", d.file.string()}});
-      }
-      for (const auto& m : set.media)
-        media.push_back({{"id", m.id},
-                         {"name", m.name},
-                         {"thickness_mm", m.thickness_mm},
-                         {"cut", settings_json(m.cut)},
-                         {"score", settings_json(m.score)},
-                         {"draw", settings_json(m.draw)},
-                         {"file", m.file.string()}});
-      nlohmann::json dirs = nlohmann::json::array();
-      for (const auto& dir : cli_profile_dirs())
-        dirs.push_back(dir.string());
-      std::cout << versioned({{"profile_dirs", dirs}, {"devices", devs}, {"media", media}}).dump(2) << "\n";
-      return;
-    }
-    std::printf("Devices (--device):\n  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", "ID", "NAME", "LANG", "USB",
-                "AREA mm", "REGMARKS", "TOOLS (kind@holder)");
-    for (const auto& d : set.devices) {
-      char area[32];
-      std::snprintf(area, sizeof area, "%.1f x %.0f", d.area_width_mm, d.area_max_length_mm);
-      std::printf("  %-14s %-24s %-5s %-10s %-16s %-8s %s\n", d.id.c_str(), d.name.c_str(),
-                  devices::protocol_name(d.protocol), usb(d).c_str(), area,
-                  d.regmarks.supported ? "yes" : "no", tools(d).c_str());
-    }
-    std::printf("\nMedia (--media):\n  %-15s %-20s %-24s %-24s %s\n", "ID", "NAME", "CUT", "SCORE", "FOLDS");
-    for (const auto& m : set.media) {
-      std::printf("  %-15s %-20s %-24s %-24s %s\n", m.id.c_str(), m.name.c_str(), settings(m.cut).c_str(),
-                  settings(m.score).c_str(),
-                  m.fold_method ? devices::fold_method_name(*m.fold_method) : "device default");
-    }
-  });
+  cmd->callback([args] { run_profiles(*args); });
 }
 
 }  // namespace foldkit::cli

@@ -4,11 +4,28 @@
 #include <map>
 #include <numbers>
 
+#include "choices.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/unfold/seams.hpp"
 #include "length_option.hpp"
 
 namespace foldkit::cli {
+namespace {
+
+// What --method takes: "default", then the methods.
+std::vector<std::string> method_names_and_default() {
+  std::vector<std::string> names = choice_names(unfold_methods());
+  names.insert(names.begin(), "default");
+  return names;
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, unfold::Method>>& unfold_methods() {
+  static const std::vector<std::pair<std::string, unfold::Method>> methods = {
+      {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
+  return methods;
+}
 
 void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
   auto* group = "Unfolding";
@@ -16,7 +33,7 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
       ->check(number_in(4, 100e6, "faces"))
       ->group(group);
   cmd.add_option("--method", o.method, "Unfolding method: mst (baseline), search, ga, or default")
-      ->check(CLI::IsMember({"default", "mst", "search", "ga"}))
+      ->check(CLI::IsMember(method_names_and_default()))
       ->group(group);
   cmd.add_option("--seed", o.unfold.seed, "Random seed: the same seed gives the same result")->group(group);
   cmd.add_option("--time-limit", o.unfold.time_limit_s,
@@ -58,9 +75,8 @@ void add_unfold_options(CLI::App& cmd, UnfoldCliOptions& o) {
 }
 
 void finish_unfold_options(UnfoldCliOptions& o) {
-  static const std::map<std::string, unfold::Method> methods = {
-      {"mst", unfold::Method::Mst}, {"search", unfold::Method::Search}, {"ga", unfold::Method::Ga}};
-  if (auto it = methods.find(o.method); it != methods.end()) o.unfold.method = it->second;
+  for (const auto& [name, method] : unfold_methods())
+    if (o.method == name) o.unfold.method = method;
   o.unfold.flat_angle_rad = o.flat_angle_deg * std::numbers::pi / 180.0;
 }
 

@@ -4,6 +4,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -22,6 +24,10 @@ struct UnfoldCliOptions {
   /// The number of the first vertex in --cut/--keep lists; nullopt: the mesh format's own (OBJ 1, OFF/PLY 0).
   std::optional<int> index_base;
 };
+
+/// The unfolding methods by the names --method and `bench --methods` take, in the order messages list them
+/// (--method also takes "default": the library's choice).
+const std::vector<std::pair<std::string, unfold::Method>>& unfold_methods();
 
 /// Adds --max-faces, --method, --seed, --time-limit, --threads, --population, --lambda-p/-l/-m/-b,
 /// --cut FILE, --keep FILE and --index-base to `cmd`, bound to `options`.

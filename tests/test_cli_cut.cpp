@@ -13,6 +13,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cmd_cut.hpp"
+#include "cmd_profiles.hpp"
+#include "in_process.hpp"
 #include "scoped_env.hpp"
 #include "test_images.hpp"
 #include "test_paths.hpp"
@@ -47,10 +50,9 @@ std::string mesh() {
 }
 
 TEST(CliProfiles, ListsEveryDeviceAndMedium) {
-  const auto dir = foldkit::test::temp_dir("cli-profiles");
-  const CliRun r = run_foldkit(dir, {"profiles", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  foldkit::cli::ProfilesArgs args;
+  args.json = true;
+  const auto j = nlohmann::json::parse(foldkit::test::stdout_of([&] { foldkit::cli::run_profiles(args); }));
   std::set<std::string> devices, media;
   for (const auto& d : j["devices"])
     devices.insert(d["id"]);
@@ -76,10 +78,14 @@ TEST(CliProfiles, NamesTheFileAndKeyOfABadUserProfile) {
 
 TEST(CliCut, DryRunReportsCutLengthTravelAndTimeAndWritesTheRendering) {
   const auto dir = foldkit::test::temp_dir("cli-dry");
-  const CliRun r = run_foldkit(dir, {"cut", mesh(), "--device", "cameo4", "--media", "cardstock-220",
-                                     "--dry-run", "--json", "--preview", "cut.svg"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  foldkit::cli::CutArgs args;
+  args.mesh = mesh();
+  args.device = "cameo4";
+  args.media = "cardstock-220";
+  args.dry_run = true;
+  args.json = true;
+  args.preview = (dir / "cut.svg").string();
+  const auto j = nlohmann::json::parse(foldkit::test::stdout_of([&] { foldkit::cli::run_cut(args); }));
   EXPECT_TRUE(j["simulated"].get<bool>());
   ASSERT_GE(j["sheets"].size(), 1u);
   const auto& s = j["sheets"][0];

@@ -13,9 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cmd_devices.hpp"
 #include "device_fixtures.hpp"
 #include "foldkit/devices/usb_transport.hpp"
 #include "foldkit/error.hpp"
+#include "in_process.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -95,6 +97,14 @@ bool inside_umockdev() {
   return std::getenv("FOLDKIT_UMOCKDEV_CHILD") != nullptr;
 }
 
+// `foldkit devices --json [--usb-id ID]...` run in this process.
+nlohmann::json devices_json(const std::vector<std::string>& usb_ids) {
+  foldkit::cli::DevicesArgs args;
+  args.json = true;
+  args.usb_ids = usb_ids;
+  return nlohmann::json::parse(foldkit::test::stdout_of([&] { foldkit::cli::run_devices(args); }));
+}
+
 }  // namespace
 
 TEST(CliDevices, ListsTheKnownModelsAndExitsZero) {
@@ -107,9 +117,7 @@ TEST(CliDevices, ListsTheKnownModelsAndExitsZero) {
 }
 
 TEST(CliDevices, JsonListsEveryBuiltinModelWithHexIds) {
-  const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = devices_json({});
   for (const auto& id : builtin_usb_ids()) {
     bool listed = false;
     for (const auto& m : j["known_models"])
@@ -124,25 +132,20 @@ TEST(CliDevices, JsonListsEveryBuiltinModelWithHexIds) {
 }
 
 TEST(CliDevices, AUsbIdFromTheCommandLineJoinsTheKnownModels) {
-  const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices", "--json", "--usb-id",
-                         "0b4d:11ff=Cameo 6 (prototype)"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = devices_json({"0b4d:11ff=Cameo 6 (prototype)"});
   bool listed = false;
   for (const auto& m : j["known_models"])
     listed |= m["vendor"] == "0b4d" && m["product"] == "11ff" && m["model"] == "Cameo 6 (prototype)";
-  EXPECT_TRUE(listed) << r.out;
+  EXPECT_TRUE(listed) << j.dump();
 }
 
 TEST(CliDevices, ListsTheDeviceProfilesWithTheirUsbIds) {
-  const Outcome r = run({foldkit::test::foldkit_binary().string(), "devices", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = devices_json({});
   bool cameo3 = false;
   for (const auto& p : j["profiles"])
     cameo3 |=
         p["id"] == "cameo3" && p["vendor"] == "0b4d" && p["product"] == "112f" && p["protocol"] == "gpgl";
-  EXPECT_TRUE(cameo3) << r.out;
+  EXPECT_TRUE(cameo3) << j.dump();
 }
 
 TEST(CliDevices, ABadUserProfileIsAnInputErrorNamingTheFile) {

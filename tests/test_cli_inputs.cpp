@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cmd_inspect.hpp"
+#include "in_process.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -77,9 +79,10 @@ TEST(CliInputs, EveryTrickyCorpusFileIsInspectedSuccessfully) {
   auto shared = foldkit::test::shared_meshes();
   if (!shared) GTEST_SKIP() << "../shared/meshes not present";
   for (const auto& entry : fs::directory_iterator(*shared / "tricky")) {
-    const CliRun r = run_foldkit({"inspect", "--json", entry.path().string()});
-    ASSERT_EQ(r.exit_code, 0) << entry.path() << ": " << r.err;
-    const auto j = nlohmann::json::parse(r.out);
+    foldkit::cli::InspectArgs args;
+    args.mesh = entry.path().string();
+    args.json = true;
+    const auto j = nlohmann::json::parse(foldkit::test::stdout_of([&] { foldkit::cli::run_inspect(args); }));
     EXPECT_GT(j["face_count"].get<int>(), 0);
     EXPECT_TRUE(j["orientable"].get<bool>());
   }
@@ -89,8 +92,10 @@ TEST(CliInputs, TrickyFilesReportWhatTheLoaderRepaired) {
   auto shared = foldkit::test::shared_meshes();
   if (!shared) GTEST_SKIP() << "../shared/meshes not present";
   const auto inspect = [&](const std::string& name) {
-    return nlohmann::json::parse(
-        run_foldkit({"inspect", "--json", (*shared / "tricky" / name).string()}).out);
+    foldkit::cli::InspectArgs args;
+    args.mesh = (*shared / "tricky" / name).string();
+    args.json = true;
+    return nlohmann::json::parse(foldkit::test::stdout_of([&] { foldkit::cli::run_inspect(args); }));
   };
   const auto two = inspect("two_components.obj");
   EXPECT_EQ(two["component_count"], 2);

@@ -2,6 +2,7 @@
 // grouped by piece with no vertex shared between pieces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -9,9 +10,12 @@
 #include <set>
 #include <sstream>
 
+#include "cmd_make.hpp"
+#include "cmd_unfold.hpp"
 #include "foldkit/geom/predicates.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
+#include "in_process.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -60,9 +64,11 @@ Net read_net(const fs::path& path) {
 TEST(CliUnfold, TheNetKeepsFaceOrderAndIsFlatCongruentAndUnmirrored) {
   const fs::path dir = test::temp_dir("cli_unfold");
   const fs::path mesh_file = test::example_mesh("penguin_500.obj");
-  auto run = test::run_foldkit({"unfold", mesh_file.string(), "-o", (dir / "net.obj").string(), "--json"});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  auto summary = nlohmann::json::parse(run.out);
+  cli::UnfoldArgs args;
+  args.mesh = mesh_file.string();
+  args.output = (dir / "net.obj").string();
+  args.json = true;
+  auto summary = nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(args); }));
   unfold::Mesh mesh = unfold::load_mesh(mesh_file).mesh;
   EXPECT_EQ(summary["face_count"], mesh.num_faces());
   EXPECT_GE(summary["piece_count"].get<int>(), 1);
@@ -109,9 +115,12 @@ TEST(CliUnfold, EveryTrickyMeshUnfolds) {
   if (!shared) GTEST_SKIP() << "../shared/meshes not present";
   for (const auto& entry : fs::directory_iterator(*shared / "tricky")) {
     SCOPED_TRACE(entry.path().string());
-    auto run = test::run_foldkit({"unfold", entry.path().string(), "--json", "--method", "mst"});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    const auto j = nlohmann::json::parse(run.out);
+    cli::UnfoldArgs args;
+    args.mesh = entry.path().string();
+    args.json = true;
+    args.quiet = true;
+    args.unfold.method = "mst";
+    const auto j = nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(args); }));
     const unfold::Mesh mesh = unfold::load_mesh(entry.path()).mesh;
     EXPECT_EQ(j["face_count"].get<int>(), mesh.num_faces());
     EXPECT_EQ(j["method"].get<std::string>(), "mst");
@@ -195,13 +204,22 @@ TEST(CliUnfold, EachInputPolygonIsOnePolygonOfTheNetInTheFileOrder) {
 TEST(CliUnfold, WithASizeAndPaperTheNetHasThePartsMakeLaysOut) {
   const fs::path dir = test::temp_dir("cli_unfold_parts");
   const fs::path mesh_file = test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj";
-  auto unfold =
-      test::run_foldkit({"unfold", mesh_file.string(), "--size", "150mm", "--paper", "A4", "--json"});
-  auto make = test::run_foldkit({"make", mesh_file.string(), "--size", "150mm", "--paper", "A4", "--json",
-                                 "-o", (dir / "barn.pdf").string()});
-  ASSERT_EQ(unfold.exit_code, 0) << unfold.err;
-  ASSERT_EQ(make.exit_code, 0) << make.err;
-  const auto u = nlohmann::json::parse(unfold.out), m = nlohmann::json::parse(make.out);
+  cli::LayoutCliOptions layout;
+  layout.size = "150";
+  layout.paper = "A4";
+  cli::UnfoldArgs unfold;
+  unfold.mesh = mesh_file.string();
+  unfold.json = true;
+  unfold.quiet = true;
+  unfold.layout = layout;
+  cli::MakeArgs make;
+  make.mesh = mesh_file.string();
+  make.output = (dir / "barn.pdf").string();
+  make.json = true;
+  make.quiet = true;
+  make.layout = layout;
+  const auto u = nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(unfold); }));
+  const auto m = nlohmann::json::parse(test::stdout_of([&] { cli::run_make(make); }));
   EXPECT_GT(u["piece_count"].get<int>(), 1) << "the barn at 150 mm does not fit A4 in one piece";
   EXPECT_EQ(u["piece_count"], m["piece_count"]);
   EXPECT_EQ(u["seam_count"], m["seam_count"]);
@@ -228,12 +246,42 @@ TEST(CliUnfold, SeamListsUseTheFilesOwnVertexNumbers) {
   int a = 0, b = 0, c = 0;
   face >> a >> b >> c;
   std::ofstream(dir / "cut.txt") << a << " " << b << "\n" << b << " " << c << "\n";
-  auto run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net.obj").string(), "--cut",
-                                (dir / "cut.txt").string(), "--json", "-q"});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // Face 0 of the net is that face; a corner of it that no other face of the net uses is one where both
+  // of its edges are cut (net vertices are shared only across folds).
+  const auto lone_corners_of_face_0 = [](const Net& net) {
+    int lone = 0;
+    for (int v : net.f[0]) {
+      bool shared = false;
+      for (std::size_t f = 1; f < net.f.size(); ++f)
+        shared |= std::find(net.f[f].begin(), net.f[f].end(), v) != net.f[f].end();
+      lone += shared ? 0 : 1;
+    }
+    return lone;
+  };
+  cli::UnfoldArgs cut;
+  cut.mesh = mesh;
+  cut.output = (dir / "net.obj").string();
+  cut.unfold.cut_file = (dir / "cut.txt").string();
+  cut.json = true;
+  cut.quiet = true;
+  const auto j = nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(cut); }));
+  EXPECT_EQ(j["face_count"].get<int>(), unfold::load_mesh(mesh).mesh.num_faces());
+  EXPECT_EQ(j["output"].get<std::string>(), cut.output);
+  EXPECT_GE(j["cut_edge_count"].get<int>(), 2) << "the two edges of the list are cut";
+  const Net cut_net = read_net(dir / "net.obj");
+  ASSERT_EQ(static_cast<int>(cut_net.f.size()), j["face_count"].get<int>());
+  EXPECT_EQ(lone_corners_of_face_0(cut_net), 1) << "the corner between the two listed edges is cut free";
+  // The same list as --keep folds those edges: every corner of face 0 is shared with a neighbour.
+  cli::UnfoldArgs keep = cut;
+  keep.unfold.cut_file.clear();
+  keep.unfold.keep_file = (dir / "cut.txt").string();
+  keep.output = (dir / "net-keep.obj").string();
+  const auto k = nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(keep); }));
+  EXPECT_EQ(k["output"].get<std::string>(), keep.output);
+  EXPECT_EQ(lone_corners_of_face_0(read_net(dir / "net-keep.obj")), 0);
   // Counted from 0, the same numbers name other vertices: not edges of the file, refused with exit 3.
-  run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net2.obj").string(), "--cut",
-                           (dir / "cut.txt").string(), "--index-base", "0", "-q"});
+  const auto run = test::run_foldkit({"unfold", mesh, "-o", (dir / "net2.obj").string(), "--cut",
+                                      (dir / "cut.txt").string(), "--index-base", "0", "-q"});
   EXPECT_EQ(run.exit_code, 3) << run.err;
   EXPECT_NE(
       run.err.find("cut.txt: line 1: " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of"),

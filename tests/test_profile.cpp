@@ -67,6 +67,18 @@ TEST(Profile, ReadsTheCameo4AsTheProtocolDocumentDescribesIt) {
   EXPECT_EQ(d.regmarks.search, "TB123");
 }
 
+TEST(Profile, EachFoldMethodIsNamedOnceAndItsNameReadsBackAsIt) {
+  const auto& choices = foldkit::devices::fold_method_choices();
+  ASSERT_EQ(choices.size(), 4u);
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    EXPECT_EQ(foldkit::devices::fold_method_name(choices[i].second), choices[i].first);
+    for (std::size_t k = 0; k < i; ++k) {
+      EXPECT_NE(choices[k].first, choices[i].first);
+      EXPECT_NE(choices[k].second, choices[i].second);
+    }
+  }
+}
+
 TEST(Profile, ReadsMediaSettings) {
   const MediaProfile m = load_media_profile(test::source_dir() / "profiles" / "media" / "cardstock-300.toml");
   EXPECT_EQ(m.id, "cardstock-300");

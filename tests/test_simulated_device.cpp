@@ -1,6 +1,7 @@
 // The simulated device: strict parsing, state, faults, rendering, and the round trip every device
 // profile must pass: sheet -> job -> bytes -> simulated device gives back the same strokes.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <fstream>
 
@@ -295,15 +296,19 @@ TEST(SendJob, StopsCleanlyOnCancelWithTheToolUpAndTheJobEnded) {
   EXPECT_LT(dev.strokes().size(), job.stats.strokes);
 }
 
-TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
-  const DeviceProfile& device = profiles().device("test");
+// The two-piece sheet planned for the "test" profile with pen labels, run on `dev` to the end.
+void cut_and_draw_two_pieces(SimulatedDevice& dev) {
   PlanOptions o;
   o.draw_labels = true;
   o.font = &font();
-  SimulatedDevice dev(device);
-  dev.write(
-      stream_bytes(encode_gpgl(plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"), o))));
+  dev.write(stream_bytes(encode_gpgl(
+      plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("copy-80"), o))));
   dev.close();
+}
+
+TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
+  SimulatedDevice dev(profiles().device("test"));
+  cut_and_draw_two_pieces(dev);
   const auto dir = test::temp_dir("sim-render");
   dev.render(dir / "cut.png");
   dev.render(dir / "cut.svg");
@@ -315,6 +320,31 @@ TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
   EXPECT_NE(text.find("<svg"), std::string::npos);
   EXPECT_NE(text.find("rgb(80%,10%,10%)"), std::string::npos) << "pen strokes drawn red";
   EXPECT_THROW(dev.render(dir / "cut.pdf"), OutputError);
+}
+
+TEST(SimulatedDevice, TheSceneDrawsEveryStrokeInItsToolsColourInsideItsBox) {
+  SimulatedDevice dev(profiles().device("test"));
+  cut_and_draw_two_pieces(dev);
+  const SimScene scene = dev.scene();
+  ASSERT_EQ(scene.lines.size(), dev.strokes().size());
+  const std::array<double, 3> pen{0.8, 0.1, 0.1}, cut{0, 0, 0}, score{0.1, 0.3, 0.8}, scorer{0.1, 0.55, 0.2};
+  int pens = 0, cuts = 0;
+  for (const SimScene::Line& line : scene.lines) {
+    EXPECT_TRUE(line.rgb == pen || line.rgb == cut || line.rgb == score || line.rgb == scorer);
+    pens += line.rgb == pen ? 1 : 0;
+    cuts += line.rgb == cut ? 1 : 0;
+    EXPECT_EQ(line.width_mm, line.rgb == cut ? 0.25 : 0.2);
+    for (Vec2 p : line.points) {
+      EXPECT_GE(p.x, scene.box.min.x - 1e-9);
+      EXPECT_LE(p.x, scene.box.max.x + 1e-9);
+      EXPECT_GE(p.y, scene.box.min.y - 1e-9);
+      EXPECT_LE(p.y, scene.box.max.y + 1e-9);
+    }
+  }
+  EXPECT_GT(pens, 0) << "the labels are drawn with the pen";
+  EXPECT_GT(cuts, 0) << "the outlines are cut";
+  EXPECT_FALSE(scene.sheet) << "no sheet was loaded";
+  EXPECT_FALSE(scene.search_origin) << "no registration marks were searched";
 }
 
 // Records how long each query may take: the reference allows 10 s for FG and TB71 (the head moves),

@@ -52,8 +52,8 @@ MachineModel silhouette(const char* name, std::uint16_t product, double width_mm
   return m;
 }
 
-std::vector<MachineModel> builtin_models() {
-  std::vector<MachineModel> out;
+// The Silhouette line [IS]: Cameo 3, 4, 5, Portrait 3 and Curio.
+void add_silhouettes(std::vector<MachineModel>& out) {
   {
     MachineModel m = silhouette("Silhouette Cameo 3", 0x112f, 304.8, 3000, 2, 10, GpglFamily::Cameo3);
     m.facts.firmware = "CAMEO 3 V1.60";  // 2.1: the recorded FG reply
@@ -84,56 +84,70 @@ std::vector<MachineModel> builtin_models() {
     m.commands.erase("TG");
     out.push_back(m);
   }
-  {
-    // Graphtec's own list [GPGL-L]; 0.1 mm steps and X = feed, Y = carriage [CE]; the origin at the
-    // loaded sheet (a roll cutter). No Silhouette queries, status or mats.
-    MachineModel m;
-    DeviceProfile& d = m.facts;
-    d.name = "Graphtec CE6000-60";
-    d.protocol = Protocol::Gpgl;
-    d.usb_vendor = kGraphtec;
-    d.usb_product = 0x1122;
-    d.units_per_mm = 10;
-    d.axes = {true, false, false, true};
-    d.area_width_mm = 603;
-    d.area_max_length_mm = 50000;
-    d.holders = 1;
-    d.speed_steps = {101, 160};  // ! l: 101-160 = l - 100 cm/s (1-10 is the other form)
-    d.force_steps = {1, 38};     // * a,f: f 1-38
-    d.gpgl_family = GpglFamily::Graphtec;
-    m.commands = kGraphtecCommands;
-    out.push_back(m);
-  }
-  {
-    // Roland GX-24: HP-GL at 40 PLU/mm with Roland's !FS force [FM]; origin at the loaded sheet.
-    MachineModel m;
-    DeviceProfile& d = m.facts;
-    d.name = "Roland GX-24";
-    d.protocol = Protocol::Hpgl;
-    d.firmware = "GX-24";
-    d.usb_vendor = kRoland;
-    d.usb_product = 0x0405;
-    d.units_per_mm = 40;
-    d.axes = {true, false, false, true};
-    d.area_width_mm = 584;
-    d.area_max_length_mm = 25000;
-    d.holders = 1;
-    d.speed_steps = {1, 50};
-    d.force_steps = {30, 250};
-    d.hpgl_force_command = "!FS";
-    m.commands = kHpglCommands;
-    m.commands.erase("FS");
-    m.commands.insert("!FS");
-    out.push_back(m);
-  }
-  for (MachineModel& m : out) {
-    // Media without a mat (TG0) on every Silhouette that takes TG; listed last, the mats come first.
-    if (m.commands.count("TG"))
-      m.facts.mats.push_back(mat("none", 0, m.facts.area_width_mm, m.facts.area_max_length_mm));
-    m.facts.id = m.facts.name;
-    if (m.facts.firmware.empty()) m.facts.firmware = m.facts.name;
-    m.facts.tools.push_back({"blade", ToolKind::Blade, 1, 0, m.autoblade_holder_1});
-  }
+}
+
+MachineModel graphtec_ce6000() {
+  // Graphtec's own list [GPGL-L]; 0.1 mm steps and X = feed, Y = carriage [CE]; the origin at the
+  // loaded sheet (a roll cutter). No Silhouette queries, status or mats.
+  MachineModel m;
+  DeviceProfile& d = m.facts;
+  d.name = "Graphtec CE6000-60";
+  d.protocol = Protocol::Gpgl;
+  d.usb_vendor = kGraphtec;
+  d.usb_product = 0x1122;
+  d.units_per_mm = 10;
+  d.axes = {true, false, false, true};
+  d.area_width_mm = 603;
+  d.area_max_length_mm = 50000;
+  d.holders = 1;
+  d.speed_steps = {101, 160};  // ! l: 101-160 = l - 100 cm/s (1-10 is the other form)
+  d.force_steps = {1, 38};     // * a,f: f 1-38
+  d.gpgl_family = GpglFamily::Graphtec;
+  m.commands = kGraphtecCommands;
+  return m;
+}
+
+MachineModel roland_gx24() {
+  // Roland GX-24: HP-GL at 40 PLU/mm with Roland's !FS force [FM]; origin at the loaded sheet.
+  MachineModel m;
+  DeviceProfile& d = m.facts;
+  d.name = "Roland GX-24";
+  d.protocol = Protocol::Hpgl;
+  d.firmware = "GX-24";
+  d.usb_vendor = kRoland;
+  d.usb_product = 0x0405;
+  d.units_per_mm = 40;
+  d.axes = {true, false, false, true};
+  d.area_width_mm = 584;
+  d.area_max_length_mm = 25000;
+  d.holders = 1;
+  d.speed_steps = {1, 50};
+  d.force_steps = {30, 250};
+  d.hpgl_force_command = "!FS";
+  m.commands = kHpglCommands;
+  m.commands.erase("FS");
+  m.commands.insert("!FS");
+  return m;
+}
+
+// What every built-in model has: its name as id and firmware (unless recorded) and a blade in holder 1.
+void add_common_facts(MachineModel& m) {
+  // Media without a mat (TG0) on every Silhouette that takes TG; listed last, the mats come first.
+  if (m.commands.count("TG"))
+    m.facts.mats.push_back(mat("none", 0, m.facts.area_width_mm, m.facts.area_max_length_mm));
+  m.facts.id = m.facts.name;
+  if (m.facts.firmware.empty()) m.facts.firmware = m.facts.name;
+  m.facts.tools.push_back({"blade", ToolKind::Blade, 1, 0, m.autoblade_holder_1});
+}
+
+// Data more than logic: one block per machine, each fact with the source that gives it.
+std::vector<MachineModel> builtin_models() {
+  std::vector<MachineModel> out;
+  add_silhouettes(out);
+  out.push_back(graphtec_ce6000());
+  out.push_back(roland_gx24());
+  for (MachineModel& m : out)
+    add_common_facts(m);
   return out;
 }
 

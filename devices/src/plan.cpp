@@ -218,10 +218,8 @@ struct PassPlan {
   std::vector<Item> items;
 };
 
-}  // namespace
-
-Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile& media,
-             const PlanOptions& options) {
+// The job's device facts, before any pass.
+Job job_for(const DeviceProfile& device, const PlanOptions& options) {
   Job job;
   job.device_id = device.id;
   job.device_name = device.name;
@@ -235,197 +233,252 @@ Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile
   if (const Mat* mat = options.mat.empty() ? (device.mats.empty() ? nullptr : &device.mats.front())
                                            : device.mat(options.mat))
     job.mat_code = mat->code;
+  return job;
+}
 
-  std::optional<PrintedMarks> marks;
-  Vec2 mark_origin{0, 0};
-  if (options.regmarks) {
-    if (!device.regmarks.supported || device.protocol != Protocol::Gpgl)
-      throw DeviceError(device.name + " cannot search registration marks (print-and-cut)");
-    marks = printed_marks(sheet);
-    if (!marks) throw DeviceError("the sheet has no registration marks (lay it out with marks and print it)");
-    check_searchable(device, *marks);
-    mark_origin = marks->origin_mm + options.offset_mm;
+// The sheet's registration marks, checked against what the device can search; nullopt without --regmarks.
+std::optional<PrintedMarks> searchable_marks(const Sheet& sheet, const DeviceProfile& device,
+                                             const PlanOptions& options) {
+  if (!options.regmarks) return std::nullopt;
+  if (!device.regmarks.supported || device.protocol != Protocol::Gpgl)
+    throw DeviceError(device.name + " cannot search registration marks (print-and-cut)");
+  std::optional<PrintedMarks> marks = printed_marks(sheet);
+  if (!marks) throw DeviceError("the sheet has no registration marks (lay it out with marks and print it)");
+  check_searchable(device, *marks);
+  return marks;
+}
+
+std::string describe(const Path& p, std::size_t i) {
+  std::string s = std::string(role_name(p.role)) + " path " + std::to_string(i + 1);
+  if (p.piece >= 0) s += " (piece " + std::to_string(p.piece) + ")";
+  return s;
+}
+
+std::vector<Vec2> shifted(const std::vector<Vec2>& pts, Vec2 shift) {
+  std::vector<Vec2> out;
+  out.reserve(pts.size());
+  for (Vec2 p : pts)
+    out.push_back(p + shift);
+  return out;
+}
+
+// The pen pass: label paths, then seam numbers and part letters in the stroke font (a part cut from blank
+// card is found by its letter too).
+PassPlan draw_pass(const Sheet& sheet, const Tool& pen, const MediaProfile& media, const PlanOptions& options,
+                   Vec2 shift) {
+  PassPlan draw{PassKind::Draw, ToolKind::Pen, &pen, media.draw, {}};
+  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
+    const Path& p = sheet.paths[i];
+    if (p.role == PathRole::Label && !p.points_mm.empty())
+      draw.items.push_back({shifted(p.points_mm, shift), p.closed, p.role, i, p.piece, describe(p, i)});
   }
+  if (!sheet.texts.empty() && !options.font) throw DeviceError("cannot draw labels: no stroke font loaded");
+  for (std::size_t i = 0; i < sheet.texts.size(); ++i) {
+    const Text& t = sheet.texts[i];
+    if (t.role != PathRole::Label && t.role != PathRole::Piece) continue;
+    const std::string what = t.role == PathRole::Piece ? "part letter \"" : "text \"";
+    for (auto& stroke : text_strokes(*options.font, t)) {
+      if (stroke.size() >= 2)
+        draw.items.push_back({shifted(stroke, shift), false, t.role, i, t.piece, what + t.text + "\""});
+    }
+  }
+  return draw;
+}
+
+// The option's fold method, else the device's scorer, else the media's or device's; a scorer the device
+// lacks (or whose holder the pen takes) falls back to the media's other method, said in `notes`.
+FoldMethod fold_method(const DeviceProfile& device, const MediaProfile& media, const PlanOptions& options,
+                       int pen_holder, std::vector<std::string>& notes) {
+  const Tool* scorer = device.tool(ToolKind::Scorer);
+  FoldMethod method;
+  if (options.fold_method) {
+    method = *options.fold_method;
+  } else if (device.fold_method == FoldMethod::Scorer && scorer) {
+    method = FoldMethod::Scorer;
+  } else {
+    method = media.fold_method.value_or(device.fold_method);
+  }
+  if (method == FoldMethod::Scorer && (!scorer || scorer->holder == pen_holder)) {
+    const FoldMethod fallback = media.fold_method.value_or(FoldMethod::ReducedForce);
+    method = fallback == FoldMethod::Scorer ? FoldMethod::ReducedForce : fallback;
+    notes.push_back(std::string(scorer ? "the pen takes the scoring tool's holder" : "no scoring tool") +
+                    ": folds are marked by " + fold_method_name(method));
+  }
+  return method;
+}
+
+// The fold pass for `method` (not None): scored, kiss-cut with the blade, or perforated.
+PassPlan score_pass(const Sheet& sheet, const DeviceProfile& device, const MediaProfile& media,
+                    FoldMethod method, const Tool& blade, Vec2 shift) {
+  PassPlan score{PassKind::Score, ToolKind::Blade, &blade, media.score, {}};
+  if (method == FoldMethod::Scorer) {
+    score.tool = ToolKind::Scorer;
+    score.tool_def = device.tool(ToolKind::Scorer);
+  } else if (method == FoldMethod::Perforate) {
+    score.kind = PassKind::Perforate;
+    score.settings = media.cut;
+    score.settings.passes = 1;
+  }
+  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
+    const Path& p = sheet.paths[i];
+    if ((p.role != PathRole::Mountain && p.role != PathRole::Valley) || p.points_mm.size() < 2) continue;
+    if (method == FoldMethod::Perforate) {
+      for (auto& dash :
+           dashes(shifted(p.points_mm, shift), p.closed, media.perforation_cut_mm, media.perforation_gap_mm))
+        score.items.push_back({std::move(dash), false, p.role, i, p.piece, describe(p, i)});
+    } else {
+      score.items.push_back({shifted(p.points_mm, shift), p.closed, p.role, i, p.piece, describe(p, i)});
+    }
+  }
+  return score;
+}
+
+PassPlan cut_pass(const Sheet& sheet, const Tool& blade, const MediaProfile& media, Vec2 shift) {
+  PassPlan cut{PassKind::Cut, ToolKind::Blade, &blade, media.cut, {}};
+  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
+    const Path& p = sheet.paths[i];
+    if (p.role == PathRole::Cut && p.points_mm.size() >= 2)
+      cut.items.push_back({shifted(p.points_mm, shift), p.closed, p.role, i, p.piece, describe(p, i)});
+  }
+  return cut;
+}
+
+// The passes in the order they run: labels first (drawing on paper that is still whole keeps the ink where
+// the print put it), then folds, outlines last (once a piece is cut free it may shift, and nothing may be
+// done on it after that). Empty passes are left out.
+std::vector<PassPlan> pass_plans(const Sheet& sheet, const DeviceProfile& device, const MediaProfile& media,
+                                 const PlanOptions& options, Vec2 shift, std::vector<std::string>& notes) {
+  std::vector<PassPlan> plans;
+  const Tool* blade = device.tool(ToolKind::Blade);
+  if (!blade) throw DeviceError(device.name + " has no blade");
+  int pen_holder = 0;
+  if (options.draw_labels) {
+    const Tool* pen = device.tool(ToolKind::Pen);
+    if (!pen) throw DeviceError(device.name + " has no pen holder: cannot draw labels");
+    pen_holder = pen->holder;
+    PassPlan draw = draw_pass(sheet, *pen, media, options, shift);
+    if (!draw.items.empty()) plans.push_back(std::move(draw));
+  }
+  if (options.score_folds) {
+    const FoldMethod method = fold_method(device, media, options, pen_holder, notes);
+    if (method != FoldMethod::None) {
+      PassPlan score = score_pass(sheet, device, media, method, *blade, shift);
+      if (!score.items.empty()) plans.push_back(std::move(score));
+    }
+  }
+  PassPlan cut = cut_pass(sheet, *blade, media, shift);
+  if (!cut.items.empty()) plans.push_back(std::move(cut));
+  return plans;
+}
+
+// The pass's paths in cutting order from `start_mm` (or in sheet order with options.order off).
+PathOrder order_pass(const PassPlan& plan, Vec2 start_mm, const PlanOptions& options) {
+  std::vector<ToolPath> tool_paths;
+  tool_paths.reserve(plan.items.size());
+  for (const Item& it : plan.items)
+    tool_paths.push_back({it.points_mm, it.closed});
+  PathOrderOptions po;
+  po.start_mm = start_mm;
+  po.overcut_mm = plan.kind == PassKind::Cut ? options.overcut_mm : 0;
+  po.inside_first = true;
+  if (options.order) return order_paths(tool_paths, po);
+  PathOrder order;
+  for (std::size_t i = 0; i < tool_paths.size(); ++i) {
+    OrderedPath o;
+    o.source = i;
+    o.closed = tool_paths[i].closed;
+    o.points_mm =
+        o.closed ? closed_trajectory(tool_paths[i].points_mm, 0, po.overcut_mm) : tool_paths[i].points_mm;
+    order.paths.push_back(std::move(o));
+  }
+  order.travel_before_mm = order.travel_after_mm = pen_up_travel_mm(order.paths, po.start_mm);
+  return order;
+}
+
+// The ordered paths as device strokes with the pass's tool, holder and steps.
+Pass device_pass(const PassPlan& plan, const PathOrder& order, const DeviceProfile& device,
+                 const MediaProfile& media, const Placement& pl) {
+  Pass pass;
+  pass.kind = plan.kind;
+  pass.tool = plan.tool;
+  pass.holder = plan.tool_def->holder;
+  pass.offset_code = plan.tool == ToolKind::Blade ? plan.tool_def->offset_code : 0;
+  pass.speed_step = speed_step(device, plan.settings.speed_mm_s);
+  pass.force_step = force_step(device, plan.settings.force_gf);
+  pass.speed_mm_s = pass.speed_step * device.mm_s_per_speed_step;
+  // The AutoBlade's depth is physical: every pass with it (a kiss-cut score too) gets the cut's depth.
+  if (plan.tool == ToolKind::Blade && plan.tool_def->autoblade) pass.blade_depth = media.cut.blade_depth;
+  for (const OrderedPath& o : order.paths) {
+    if (o.points_mm.size() < 2) continue;
+    Stroke s;
+    s.role = plan.items[o.source].role;
+    s.source = plan.items[o.source].source;
+    for (Vec2 p : o.points_mm) {
+      const DevicePoint d = pl.to_device(p);
+      if (!pl.inside(d))  // overcut follows the path, so this only trips on a planner bug
+        throw DeviceError("overcut of " + plan.items[o.source].what + " leaves the cutting area");
+      if (s.points.empty() || !(s.points.back() == d)) s.points.push_back(d);
+    }
+    if (s.points.size() < 2) s.points.push_back(s.points.back());  // a dot still lowers the tool
+    pass.strokes.push_back(std::move(s));
+  }
+  return pass;
+}
+
+// Where the tool is after the ordered paths (unchanged when they are all empty).
+Vec2 end_of(const PathOrder& order, Vec2 at_mm) {
+  for (auto it = order.paths.rbegin(); it != order.paths.rend(); ++it)
+    if (!it->points_mm.empty()) return it->points_mm.back();
+  return at_mm;
+}
+
+// Adds the pass to the job, once per repeat the settings ask for, with its length, travel and time.
+void add_pass(Job& job, const Pass& pass, const PathOrder& order, const ToolSettings& settings,
+              const DeviceProfile& device) {
+  double length = 0;
+  for (const Stroke& s : pass.strokes)
+    length += stroke_length_mm(s, device.units_per_mm);
+  JobStats& st = job.stats;
+  const int repeats = std::max(1, settings.passes);
+  for (int r = 0; r < repeats; ++r) {
+    st.cut_length_mm += length;
+    st.travel_before_mm += order.travel_before_mm;
+    st.travel_after_mm += order.travel_after_mm;
+    st.strokes += pass.strokes.size();
+    st.estimated_s += length / std::max(pass.speed_mm_s, 1e-9) +
+                      static_cast<double>(pass.strokes.size()) * device.tool_change_s;
+    job.passes.push_back(pass);
+  }
+}
+
+}  // namespace
+
+Job plan_job(const Sheet& sheet, const DeviceProfile& device, const MediaProfile& media,
+             const PlanOptions& options) {
+  Job job = job_for(device, options);
+  const std::optional<PrintedMarks> marks = searchable_marks(sheet, device, options);
+  const Vec2 mark_origin = marks ? marks->origin_mm + options.offset_mm : Vec2{0, 0};
   const Placement pl =
       make_placement(device, options, sheet.size_mm, marks ? std::optional<Vec2>(mark_origin) : std::nullopt);
   job.window_min = pl.machine_min;
   job.window_max = pl.machine_max;
   if (marks) job.regmarks = mark_search(device, pl, *marks, mark_origin);
 
-  auto describe = [](const Path& p, std::size_t i) {
-    std::string s = std::string(role_name(p.role)) + " path " + std::to_string(i + 1);
-    if (p.piece >= 0) s += " (piece " + std::to_string(p.piece) + ")";
-    return s;
-  };
   const Vec2 shift = options.offset_mm + (options.regmarks ? options.print_cut_offset_mm : Vec2{0, 0});
-  auto placed = [&](const std::vector<Vec2>& pts) {
-    std::vector<Vec2> out;
-    out.reserve(pts.size());
-    for (Vec2 p : pts)
-      out.push_back(p + shift);
-    return out;
-  };
-
-  std::vector<PassPlan> plans;
-  const Tool* blade = device.tool(ToolKind::Blade);
-  if (!blade) throw DeviceError(device.name + " has no blade");
-  int pen_holder = 0;
-
-  // Labels first: drawing on paper that is still whole keeps the ink where the print put it.
-  if (options.draw_labels) {
-    const Tool* pen = device.tool(ToolKind::Pen);
-    if (!pen) throw DeviceError(device.name + " has no pen holder: cannot draw labels");
-    pen_holder = pen->holder;
-    PassPlan draw{PassKind::Draw, ToolKind::Pen, pen, media.draw, {}};
-    for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
-      const Path& p = sheet.paths[i];
-      if (p.role == PathRole::Label && !p.points_mm.empty())
-        draw.items.push_back({placed(p.points_mm), p.closed, p.role, i, p.piece, describe(p, i)});
-    }
-    if (!sheet.texts.empty() && !options.font) throw DeviceError("cannot draw labels: no stroke font loaded");
-    // Seam numbers and part letters: a part cut from blank card is found by its letter too.
-    for (std::size_t i = 0; i < sheet.texts.size(); ++i) {
-      const Text& t = sheet.texts[i];
-      if (t.role != PathRole::Label && t.role != PathRole::Piece) continue;
-      const std::string what = t.role == PathRole::Piece ? "part letter \"" : "text \"";
-      for (auto& stroke : text_strokes(*options.font, t)) {
-        if (stroke.size() >= 2)
-          draw.items.push_back({placed(stroke), false, t.role, i, t.piece, what + t.text + "\""});
-      }
-    }
-    if (!draw.items.empty()) plans.push_back(std::move(draw));
-  }
-
-  if (options.score_folds) {
-    const Tool* scorer = device.tool(ToolKind::Scorer);
-    FoldMethod method;
-    if (options.fold_method) {
-      method = *options.fold_method;
-    } else if (device.fold_method == FoldMethod::Scorer && scorer) {
-      method = FoldMethod::Scorer;
-    } else {
-      method = media.fold_method.value_or(device.fold_method);
-    }
-    if (method == FoldMethod::Scorer && (!scorer || scorer->holder == pen_holder)) {
-      const FoldMethod fallback = media.fold_method.value_or(FoldMethod::ReducedForce);
-      method = fallback == FoldMethod::Scorer ? FoldMethod::ReducedForce : fallback;
-      job.notes.push_back(
-          std::string(scorer ? "the pen takes the scoring tool's holder" : "no scoring tool") +
-          ": folds are marked by " + fold_method_name(method));
-    }
-    if (method != FoldMethod::None) {
-      PassPlan score{PassKind::Score, ToolKind::Blade, blade, media.score, {}};
-      if (method == FoldMethod::Scorer) {
-        score.tool = ToolKind::Scorer;
-        score.tool_def = scorer;
-      } else if (method == FoldMethod::Perforate) {
-        score.kind = PassKind::Perforate;
-        score.settings = media.cut;
-        score.settings.passes = 1;
-      }
-      for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
-        const Path& p = sheet.paths[i];
-        if ((p.role != PathRole::Mountain && p.role != PathRole::Valley) || p.points_mm.size() < 2) continue;
-        if (method == FoldMethod::Perforate) {
-          for (auto& dash :
-               dashes(placed(p.points_mm), p.closed, media.perforation_cut_mm, media.perforation_gap_mm))
-            score.items.push_back({std::move(dash), false, p.role, i, p.piece, describe(p, i)});
-        } else {
-          score.items.push_back({placed(p.points_mm), p.closed, p.role, i, p.piece, describe(p, i)});
-        }
-      }
-      if (!score.items.empty()) plans.push_back(std::move(score));
-    }
-  }
-
-  // Outlines last: once a piece is cut free it may shift, and nothing may be done on it after that.
-  PassPlan cut{PassKind::Cut, ToolKind::Blade, blade, media.cut, {}};
-  for (std::size_t i = 0; i < sheet.paths.size(); ++i) {
-    const Path& p = sheet.paths[i];
-    if (p.role == PathRole::Cut && p.points_mm.size() >= 2)
-      cut.items.push_back({placed(p.points_mm), p.closed, p.role, i, p.piece, describe(p, i)});
-  }
-  if (!cut.items.empty()) plans.push_back(std::move(cut));
-
+  const std::vector<PassPlan> plans = pass_plans(sheet, device, media, options, shift, job.notes);
   // Every stroke is checked before any ordering or encoding, in sheet order, so the message names the
   // first offending path of the sheet.
   for (const PassPlan& plan : plans) {
     for (std::size_t k = 0; k < plan.items.size(); ++k)
       pl.check(plan.items[k], k, pass_kind_name(plan.kind));
   }
-
   Vec2 at_mm = options.regmarks ? mark_origin : device_to_page(device, {0, 0}, pl.frame_mm);
-  JobStats& st = job.stats;
   for (const PassPlan& plan : plans) {
-    std::vector<ToolPath> tool_paths;
-    tool_paths.reserve(plan.items.size());
-    for (const Item& it : plan.items)
-      tool_paths.push_back({it.points_mm, it.closed});
-    PathOrderOptions po;
-    po.start_mm = at_mm;
-    po.overcut_mm = plan.kind == PassKind::Cut ? options.overcut_mm : 0;
-    po.inside_first = true;
-    PathOrder order;
-    if (options.order) {
-      order = order_paths(tool_paths, po);
-    } else {
-      for (std::size_t i = 0; i < tool_paths.size(); ++i) {
-        OrderedPath o;
-        o.source = i;
-        o.closed = tool_paths[i].closed;
-        o.points_mm =
-            o.closed ? closed_trajectory(tool_paths[i].points_mm, 0, po.overcut_mm) : tool_paths[i].points_mm;
-        order.paths.push_back(std::move(o));
-      }
-      order.travel_before_mm = order.travel_after_mm = pen_up_travel_mm(order.paths, po.start_mm);
-    }
-    Pass pass;
-    pass.kind = plan.kind;
-    pass.tool = plan.tool;
-    pass.holder = plan.tool_def->holder;
-    pass.offset_code = plan.tool == ToolKind::Blade ? plan.tool_def->offset_code : 0;
-    pass.speed_step = speed_step(device, plan.settings.speed_mm_s);
-    pass.force_step = force_step(device, plan.settings.force_gf);
-    pass.speed_mm_s = pass.speed_step * device.mm_s_per_speed_step;
-    // The AutoBlade's depth is physical: every pass with it (a kiss-cut score too) gets the cut's depth.
-    if (plan.tool == ToolKind::Blade && plan.tool_def->autoblade) pass.blade_depth = media.cut.blade_depth;
-    for (const OrderedPath& o : order.paths) {
-      if (o.points_mm.size() < 2) continue;
-      Stroke s;
-      s.role = plan.items[o.source].role;
-      s.source = plan.items[o.source].source;
-      for (Vec2 p : o.points_mm) {
-        const DevicePoint d = pl.to_device(p);
-        if (!pl.inside(d))  // overcut follows the path, so this only trips on a planner bug
-          throw DeviceError("overcut of " + plan.items[o.source].what + " leaves the cutting area");
-        if (s.points.empty() || !(s.points.back() == d)) s.points.push_back(d);
-      }
-      if (s.points.size() < 2) s.points.push_back(s.points.back());  // a dot still lowers the tool
-      pass.strokes.push_back(std::move(s));
-    }
-    if (!order.paths.empty()) {
-      for (auto it = order.paths.rbegin(); it != order.paths.rend(); ++it) {
-        if (!it->points_mm.empty()) {
-          at_mm = it->points_mm.back();
-          break;
-        }
-      }
-    }
-    double length = 0;
-    for (const Stroke& s : pass.strokes)
-      length += stroke_length_mm(s, device.units_per_mm);
-    const int repeats = std::max(1, plan.settings.passes);
-    for (int r = 0; r < repeats; ++r) {
-      st.cut_length_mm += length;
-      st.travel_before_mm += order.travel_before_mm;
-      st.travel_after_mm += order.travel_after_mm;
-      st.strokes += pass.strokes.size();
-      st.estimated_s += length / std::max(pass.speed_mm_s, 1e-9) +
-                        static_cast<double>(pass.strokes.size()) * device.tool_change_s;
-      job.passes.push_back(pass);
-    }
+    const PathOrder order = order_pass(plan, at_mm, options);
+    add_pass(job, device_pass(plan, order, device, media, pl), order, plan.settings, device);
+    at_mm = end_of(order, at_mm);
   }
-  st.estimated_s += st.travel_after_mm / device.travel_speed_mm_s;
+  job.stats.estimated_s += job.stats.travel_after_mm / device.travel_speed_mm_s;
   return job;
 }
 

@@ -29,17 +29,18 @@ const char* tool_kind_name(ToolKind k) {
   return "?";
 }
 
+const std::vector<std::pair<std::string, FoldMethod>>& fold_method_choices() {
+  static const std::vector<std::pair<std::string, FoldMethod>> choices = {
+      {"scorer", FoldMethod::Scorer},
+      {"reduced-force", FoldMethod::ReducedForce},
+      {"perforate", FoldMethod::Perforate},
+      {"none", FoldMethod::None}};
+  return choices;
+}
+
 const char* fold_method_name(FoldMethod m) {
-  switch (m) {
-    case FoldMethod::Scorer:
-      return "scorer";
-    case FoldMethod::ReducedForce:
-      return "reduced-force";
-    case FoldMethod::Perforate:
-      return "perforate";
-    case FoldMethod::None:
-      return "none";
-  }
+  for (const auto& [name, method] : fold_method_choices())
+    if (method == m) return name.c_str();
   return "?";
 }
 
@@ -236,12 +237,6 @@ toml::table parse(const fs::path& file) {
   }
 }
 
-const std::vector<std::pair<std::string, FoldMethod>> kFoldMethods = {
-    {"scorer", FoldMethod::Scorer},
-    {"reduced-force", FoldMethod::ReducedForce},
-    {"perforate", FoldMethod::Perforate},
-    {"none", FoldMethod::None}};
-
 // Every table of a device profile may say where its facts come from (`source = "..."`): kept so
 // `foldkit profiles` and reviews can check them, and so a guess never passes for a measured fact.
 void read_source(Reader& r, DeviceProfile& d) {
@@ -259,24 +254,17 @@ StepRange read_range(Reader& r) {
   return s;
 }
 
-DeviceProfile read_device(Reader& root, const fs::path& file) {
-  DeviceProfile d;
-  d.file = file;
-  d.id = file.stem().string();
-  d.name = root.string("name");
-  d.protocol = root.choice<Protocol>("protocol", {{"gpgl", Protocol::Gpgl}, {"hpgl", Protocol::Hpgl}});
-  d.firmware = root.string("firmware", d.name);
-  d.units_per_mm = root.between("units_per_mm", kMinUnitsPerMm, kMaxUnitsPerMm);
-  d.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods, FoldMethod::ReducedForce);
-  d.travel_speed_mm_s = root.positive_up_to("travel_speed_mm_s", kMaxSpeedMmS, 200.0);
-  d.tool_change_s = root.non_negative("tool_change_s", 0.2);
-
+// [usb]: the ids that find the cutter (none: 0).
+void read_usb(Reader& root, DeviceProfile& d) {
   Reader usb = root.table("usb", true);
   d.usb_vendor = static_cast<std::uint16_t>(usb.integer("vendor", 0, 0xffff, 0));
   d.usb_product = static_cast<std::uint16_t>(usb.integer("product", 0, 0xffff, 0));
   read_source(usb, d);
   usb.finish();
+}
 
+// [axes]: how the device's coordinates lie on the sheet.
+void read_axes(Reader& root, DeviceProfile& d) {
   Reader axes = root.table("axes");
   d.axes.feed_first = axes.choice<bool>("first", {{"feed", true}, {"carriage", false}});
   d.axes.carriage_reversed = axes.choice<bool>("carriage_from", {{"left", false}, {"right", true}});
@@ -284,14 +272,20 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.axes.origin_at_media = axes.choice<bool>("origin", {{"area", false}, {"media", true}}, false);
   read_source(axes, d);
   axes.finish();
+}
 
+// [area]: what the machine reaches.
+void read_area(Reader& root, DeviceProfile& d) {
   Reader area = root.table("area");
   d.area_width_mm = area.positive_up_to("width_mm", kMaxLengthMm);
   d.area_max_length_mm = area.positive_up_to("max_length_mm", kMaxLengthMm);
   d.margin_mm = area.non_negative("margin_mm", 0.0);
   read_source(area, d);
   area.finish();
+}
 
+// [[mats]]: each no wider than the area, no id twice.
+void read_mats(Reader& root, DeviceProfile& d) {
   for (Reader& m : root.tables("mats", true)) {
     Mat mat;
     mat.id = m.string("id");
@@ -305,7 +299,10 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
     m.finish();
     d.mats.push_back(mat);
   }
+}
 
+// [holders] and [[tools]]: a blade at least, an AutoBlade only in holder 1.
+void read_tools(Reader& root, DeviceProfile& d) {
   Reader holders = root.table("holders");
   d.holders = static_cast<int>(holders.integer("count", 1, 9));
   read_source(holders, d);
@@ -325,7 +322,10 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
     d.tools.push_back(tool);
   }
   if (!d.tool(ToolKind::Blade)) root.fail("tools", "no tool of kind \"blade\"");
+}
 
+// [speed] and [force]: the device steps and what one step is.
+void read_steps(Reader& root, DeviceProfile& d) {
   Reader speed = root.table("speed");
   d.speed_steps = read_range(speed);
   d.mm_s_per_speed_step = speed.positive_up_to("mm_s_per_step", kMaxSpeedMmS);
@@ -336,7 +336,10 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.gf_per_force_step = force.positive_up_to("gf_per_step", kMaxForceGf);
   read_source(force, d);
   force.finish();
+}
 
+// [regmarks]: the sensor and the marks it finds.
+void read_regmarks(Reader& root, DeviceProfile& d) {
   Reader reg = root.table("regmarks", true);
   d.regmarks.supported = reg.boolean("supported", false);
   d.regmarks.search = reg.choice<std::string>("search", {{"TB123", "TB123"}, {"TB124", "TB124"}}, "TB123");
@@ -350,7 +353,10 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   d.regmarks.inset_mm = reg.between("inset_mm", 0.0, kMaxRegMarkInsetMm, 10.0);
   read_source(reg, d);
   reg.finish();
+}
 
+// [hpgl] or [gpgl]: only the table of the device's protocol.
+void read_dialects(Reader& root, DeviceProfile& d) {
   Reader hpgl = root.table("hpgl", true);
   d.hpgl_force_command =
       hpgl.choice<std::string>("force_command", {{"FS", "FS"}, {"!FS", "!FS"}, {"none", ""}}, "FS");
@@ -366,6 +372,27 @@ DeviceProfile read_device(Reader& root, const fs::path& file) {
   read_source(gpgl, d);
   gpgl.finish();
   if (d.protocol == Protocol::Hpgl && root.has("gpgl")) root.fail("gpgl", "only for protocol \"gpgl\"");
+}
+
+DeviceProfile read_device(Reader& root, const fs::path& file) {
+  DeviceProfile d;
+  d.file = file;
+  d.id = file.stem().string();
+  d.name = root.string("name");
+  d.protocol = root.choice<Protocol>("protocol", {{"gpgl", Protocol::Gpgl}, {"hpgl", Protocol::Hpgl}});
+  d.firmware = root.string("firmware", d.name);
+  d.units_per_mm = root.between("units_per_mm", kMinUnitsPerMm, kMaxUnitsPerMm);
+  d.fold_method = root.choice<FoldMethod>("fold_method", fold_method_choices(), FoldMethod::ReducedForce);
+  d.travel_speed_mm_s = root.positive_up_to("travel_speed_mm_s", kMaxSpeedMmS, 200.0);
+  d.tool_change_s = root.non_negative("tool_change_s", 0.2);
+  read_usb(root, d);
+  read_axes(root, d);
+  read_area(root, d);
+  read_mats(root, d);
+  read_tools(root, d);
+  read_steps(root, d);
+  read_regmarks(root, d);
+  read_dialects(root, d);
   read_source(root, d);
   if (d.fold_method == FoldMethod::Scorer && !d.tool(ToolKind::Scorer))
     root.fail("fold_method", "\"scorer\" but no tool of kind \"scorer\"");
@@ -388,7 +415,7 @@ MediaProfile read_media(Reader& root, const fs::path& file) {
   m.id = file.stem().string();
   m.name = root.string("name");
   m.thickness_mm = root.positive_up_to("thickness_mm", kMaxThicknessMm);
-  if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", kFoldMethods);
+  if (root.has("fold_method")) m.fold_method = root.choice<FoldMethod>("fold_method", fold_method_choices());
   m.cut = read_settings(root.table("cut"));
   m.score = read_settings(root.table("score"));
   m.draw = read_settings(root.table("draw"));

@@ -95,96 +95,127 @@ std::string text(const std::vector<std::byte>& reply) {
   return s;
 }
 
-}  // namespace
-
-SendResult send_job(std::span<const std::byte> stream, Transport& transport, const SendOptions& options) {
-  const std::vector<Command> commands = split(stream, options.protocol);
-  // Cutting after a mark search nobody can read would cut whether or not the marks were found.
+// Cutting after a mark search nobody can read would cut whether or not the marks were found.
+void check_replies_readable(const std::vector<Command>& commands, const Transport& transport) {
   const bool searches = std::any_of(commands.begin(), commands.end(),
                                     [](const Command& c) { return c.query == Query::RegMarks; });
   if (searches && transport.drives_device() && !transport.reads_replies())
     throw DeviceError(transport.describe() +
                       ": print-and-cut needs the registration-mark search's reply, and this connection "
                       "cannot be read; nothing was sent (use the cutter's USB connection)");
-  SendResult result;
-  for (const Command& c : commands)
-    result.strokes_total += c.starts_stroke ? 1 : 0;
-  auto report = [&](DeviceState waiting_for) {
-    if (!options.progress) return;
+}
+
+// The registration-mark search's reply: "0" (blanks and ETX aside) is found, anything else is not.
+void check_marks_found(const std::vector<std::byte>& reply, const Transport& transport) {
+  std::string r = text(reply);
+  r.erase(std::remove_if(r.begin(), r.end(), [](char ch) { return ch == ' ' || ch == '\x03'; }), r.end());
+  if (r != "0")
+    throw DeviceError(transport.describe() +
+                      ": registration marks not found (check they are printed dark, the sheet is "
+                      "aligned with the mat's corner and the marks lie inside the rollers' reach)");
+}
+
+// One send: the stream goes out in chunks of whole commands, queries one by one with their replies read.
+class Sender {
+ public:
+  Sender(std::span<const std::byte> stream, Transport& transport, const SendOptions& options)
+      : stream_(stream), transport_(transport), options_(options) {}
+
+  SendResult run(const std::vector<Command>& commands) {
+    for (const Command& c : commands)
+      result_.strokes_total += c.starts_stroke ? 1 : 0;
+    wait(transport_.status());
+    for (const Command& c : commands) {
+      if (cancelled(options_)) {
+        flush(c.begin);
+        return abort();
+      }
+      if (c.query != Query::None) {
+        flush(c.begin);
+        query(c);
+        continue;
+      }
+      strokes_in_chunk_ += c.starts_stroke ? 1 : 0;
+      set_up_ = true;
+      if (c.end - chunk_begin_ >= options_.chunk_bytes) {
+        flush(c.end);
+        // Stop-and-wait between slices: a device that stops taking data is noticed within ready_timeout.
+        wait(transport_.status());
+      }
+    }
+    flush(stream_.size());
+    return result_;
+  }
+
+ private:
+  void report(DeviceState waiting_for) const {
+    if (!options_.progress) return;
     SendProgress p;
     p.waiting_for = waiting_for;
-    p.bytes_sent = result.bytes_sent;
-    p.bytes_total = stream.size();
-    p.strokes_done = result.strokes_done;
-    p.strokes_total = result.strokes_total;
-    const double left = result.strokes_total == 0 ? 0.0
-                                                  : 1.0 - static_cast<double>(result.strokes_done) /
-                                                              static_cast<double>(result.strokes_total);
-    p.seconds_left = options.estimated_s * left;
-    options.progress(p);
-  };
+    p.bytes_sent = result_.bytes_sent;
+    p.bytes_total = stream_.size();
+    p.strokes_done = result_.strokes_done;
+    p.strokes_total = result_.strokes_total;
+    const double left = result_.strokes_total == 0 ? 0.0
+                                                   : 1.0 - static_cast<double>(result_.strokes_done) /
+                                                               static_cast<double>(result_.strokes_total);
+    p.seconds_left = options_.estimated_s * left;
+    options_.progress(p);
+  }
+
+  void wait(DeviceState state) const {
+    wait_ready(transport_, state, options_, [this](DeviceState s) { report(s); });
+  }
+
   // The abort tail is only for a device that has been set up: one still in the handshake is left alone
   // (a strict device rejects end-of-job commands before its initialisation).
-  bool set_up = false;
-  auto abort = [&] {
-    result.cancelled = true;
-    if (!set_up) return result;
-    const std::string tail = options.abort_tail                   ? *options.abort_tail
-                             : options.protocol == Protocol::Gpgl ? gpgl_abort_tail()
-                                                                  : hpgl_abort_tail();
-    transport.write(stream_bytes(tail));
-    return result;
-  };
-
-  const auto wait = [&](DeviceState state) { wait_ready(transport, state, options, report); };
-  wait(transport.status());
-  std::size_t chunk_begin = 0, strokes_in_chunk = 0;
-  auto flush = [&](std::size_t end) {
-    if (end > chunk_begin) {
-      transport.write(stream.subspan(chunk_begin, end - chunk_begin));
-      result.bytes_sent = end;
-      result.strokes_done += strokes_in_chunk;
-      strokes_in_chunk = 0;
-      chunk_begin = end;
-      report(DeviceState::Ready);
-    }
-  };
-  for (const Command& c : commands) {
-    if (cancelled(options)) {
-      flush(c.begin);
-      return abort();
-    }
-    if (c.query != Query::None) {
-      flush(c.begin);
-      const auto timeout = c.query == Query::RegMarks ? options.regmark_timeout
-                           : c.query == Query::Status ? options.reply_timeout
-                                                      : options.query_timeout;
-      const auto reply = transport.request(stream.subspan(c.begin, c.end - c.begin), timeout);
-      result.bytes_sent = chunk_begin = c.end;
-      if (reply && c.query == Query::Status) wait(parse_gpgl_status(*reply));
-      if (!reply && c.query == Query::RegMarks && transport.drives_device())
-        throw DeviceError(transport.describe() + ": no reply to the registration-mark search");
-      if (reply && c.query == Query::RegMarks) {
-        std::string r = text(*reply);
-        r.erase(std::remove_if(r.begin(), r.end(), [](char ch) { return ch == ' ' || ch == '\x03'; }),
-                r.end());
-        if (r != "0")
-          throw DeviceError(transport.describe() +
-                            ": registration marks not found (check they are printed dark, the sheet is "
-                            "aligned with the mat's corner and the marks lie inside the rollers' reach)");
-      }
-      continue;
-    }
-    strokes_in_chunk += c.starts_stroke ? 1 : 0;
-    set_up = true;
-    if (c.end - chunk_begin >= options.chunk_bytes) {
-      flush(c.end);
-      // Stop-and-wait between slices: a device that stops taking data is noticed within ready_timeout.
-      wait(transport.status());
-    }
+  SendResult abort() {
+    result_.cancelled = true;
+    if (!set_up_) return result_;
+    const std::string tail = options_.abort_tail                   ? *options_.abort_tail
+                             : options_.protocol == Protocol::Gpgl ? gpgl_abort_tail()
+                                                                   : hpgl_abort_tail();
+    transport_.write(stream_bytes(tail));
+    return result_;
   }
-  flush(stream.size());
-  return result;
+
+  // Writes the commands from the chunk's start up to `end`.
+  void flush(std::size_t end) {
+    if (end <= chunk_begin_) return;
+    transport_.write(stream_.subspan(chunk_begin_, end - chunk_begin_));
+    result_.bytes_sent = end;
+    result_.strokes_done += strokes_in_chunk_;
+    strokes_in_chunk_ = 0;
+    chunk_begin_ = end;
+    report(DeviceState::Ready);
+  }
+
+  void query(const Command& c) {
+    const auto timeout = c.query == Query::RegMarks ? options_.regmark_timeout
+                         : c.query == Query::Status ? options_.reply_timeout
+                                                    : options_.query_timeout;
+    const auto reply = transport_.request(stream_.subspan(c.begin, c.end - c.begin), timeout);
+    result_.bytes_sent = chunk_begin_ = c.end;
+    if (reply && c.query == Query::Status) wait(parse_gpgl_status(*reply));
+    if (!reply && c.query == Query::RegMarks && transport_.drives_device())
+      throw DeviceError(transport_.describe() + ": no reply to the registration-mark search");
+    if (reply && c.query == Query::RegMarks) check_marks_found(*reply, transport_);
+  }
+
+  std::span<const std::byte> stream_;
+  Transport& transport_;
+  const SendOptions& options_;
+  SendResult result_;
+  std::size_t chunk_begin_ = 0, strokes_in_chunk_ = 0;
+  bool set_up_ = false;
+};
+
+}  // namespace
+
+SendResult send_job(std::span<const std::byte> stream, Transport& transport, const SendOptions& options) {
+  const std::vector<Command> commands = split(stream, options.protocol);
+  check_replies_readable(commands, transport);
+  return Sender(stream, transport, options).run(commands);
 }
 
 }  // namespace foldkit::devices

@@ -1,7 +1,9 @@
 #include "foldkit/devices/simulated_device.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include <cairo-svg.h>
@@ -268,64 +270,92 @@ void SimulatedDevice::move_to(Vec2 p, bool down, std::size_t offset) {
 }
 
 void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
-  const auto& p = c.params;
-  const std::string& n = c.name;
-  auto as_int = [&](double v, const char* what) {
-    if (v != std::floor(v)) fail(c.offset, std::string(what) + " must be an integer, got " + fmt(v));
-    // Converting a double beyond int's range is undefined behaviour (found by fuzz_device_gpgl).
-    if (std::fabs(v) > 1e9) fail(c.offset, std::string(what) + " out of range, got " + fmt(v));
-    return static_cast<int>(v);
-  };
-  auto holder_arg = [&](std::size_t i) {
-    const int h = p.size() > i ? as_int(p[i], "holder") : holder_;
-    if (h < 1 || h > profile_.holders)
-      fail(c.offset, n + ": holder " + std::to_string(h) + " does not exist (device has " +
-                         std::to_string(profile_.holders) + ")");
-    return h;
-  };
-  if (n == "ESC05") {
+  if (gpgl_session(c)) return;
+  if (options_.require_initialize && !initialized_) fail(c.offset, c.name + " before ESC 04 (initialise)");
+  if (c.name == "TB") return gpgl_tb(c);
+  if (gpgl_query(c) || gpgl_media(c) || gpgl_tool(c) || gpgl_motion(c)) return;
+  fail(c.offset, "command " + c.name + " is not supported by this device");
+}
+
+int SimulatedDevice::gpgl_int(const ParsedCommand& c, double v, const char* what) {
+  if (v != std::floor(v)) fail(c.offset, std::string(what) + " must be an integer, got " + fmt(v));
+  // Converting a double beyond int's range is undefined behaviour (found by fuzz_device_gpgl).
+  if (std::fabs(v) > 1e9) fail(c.offset, std::string(what) + " out of range, got " + fmt(v));
+  return static_cast<int>(v);
+}
+
+int SimulatedDevice::gpgl_holder(const ParsedCommand& c, std::size_t i) {
+  const int h = c.params.size() > i ? gpgl_int(c, c.params[i], "holder") : holder_;
+  if (h < 1 || h > profile_.holders)
+    fail(c.offset, c.name + ": holder " + std::to_string(h) + " does not exist (device has " +
+                       std::to_string(profile_.holders) + ")");
+  return h;
+}
+
+void SimulatedDevice::check_steps(const ParsedCommand& c, int value, const StepRange& range,
+                                  const char* what) {
+  if (value < range.min || value > range.max)
+    fail(c.offset, std::string(what) + " " + std::to_string(value) + " out of range " +
+                       std::to_string(range.min) + ".." + std::to_string(range.max));
+}
+
+bool SimulatedDevice::gpgl_session(const ParsedCommand& c) {
+  if (c.name == "ESC05") {
     const DeviceState s = status();
     reply(s == DeviceState::NoMedia  ? "2"
           : s == DeviceState::Paused ? "3"
           : s == DeviceState::Busy   ? "1"
                                      : "0");
-    return;
-  }
-  if (n == "FG") {
+  } else if (c.name == "FG") {
     std::string fw = profile_.firmware;
     if (fw.size() < 17) fw.resize(17, ' ');
     reply(fw);
-    return;
-  }
-  if (n == "ESC04") {
+  } else if (c.name == "ESC04") {
     initialized_ = true;
-    return;
+  } else {
+    return false;
   }
-  if (options_.require_initialize && !initialized_) fail(c.offset, n + " before ESC 04 (initialise)");
-  if (n == "ESC15") {
+  return true;
+}
+
+bool SimulatedDevice::gpgl_query(const ParsedCommand& c) {
+  const std::string& n = c.name;
+  if (n == "ESC15")
     reply("0,0");
-  } else if (n == "TB") {
-    const int sub = as_int(p[0], "TB code");
-    if (sub == 71) {
-      reply("    0,    0");
-    } else if (sub == 50) {
-      if (p.size() != 2 || p[1] != 0)
-        fail(c.offset, "TB50 must be TB50,0 (portrait); landscape is not supported");
-    } else if (sub == 51 || sub == 53) {
-      (sub == 51 ? mark_arm_ : mark_stroke_) = p.size() > 1 ? p[1] : -1;
-    } else if (sub == 123 || sub == 124) {
-      if (!profile_.regmarks.supported) fail(c.offset, "this device has no registration-mark sensor");
-      if (p.size() != 5) fail(c.offset, "TB" + std::to_string(sub) + " takes height, width, top, left");
-      search_marks(Vec2{p[3], p[4]}, Vec2{p[1], p[2]});
-    } else if (sub != 99 && sub != 51 && sub != 52 && sub != 53 && sub != 54 && sub != 55) {
-      fail(c.offset, "unknown TB" + std::to_string(sub));
-    }
-  } else if (n == "FA" || n == "TC" || n == "[") {
+  else if (n == "FA" || n == "TC" || n == "[")
     reply("    0,    0");
-  } else if (n == "U") {
+  else if (n == "U")
     reply(padded(std::lround(area_max_.x)) + "," + padded(std::lround(area_max_.y)));
-  } else if (n == "TG") {
-    const int code = as_int(p[0], "mat code");
+  else
+    return false;
+  return true;
+}
+
+void SimulatedDevice::gpgl_tb(const ParsedCommand& c) {
+  const auto& p = c.params;
+  const int sub = gpgl_int(c, p[0], "TB code");
+  if (sub == 71) {
+    reply("    0,    0");
+  } else if (sub == 50) {
+    if (p.size() != 2 || p[1] != 0)
+      fail(c.offset, "TB50 must be TB50,0 (portrait); landscape is not supported");
+  } else if (sub == 51 || sub == 53) {
+    (sub == 51 ? mark_arm_ : mark_stroke_) = p.size() > 1 ? p[1] : -1;
+  } else if (sub == 123 || sub == 124) {
+    if (!profile_.regmarks.supported) fail(c.offset, "this device has no registration-mark sensor");
+    if (p.size() != 5) fail(c.offset, "TB" + std::to_string(sub) + " takes height, width, top, left");
+    search_marks(Vec2{p[3], p[4]}, Vec2{p[1], p[2]});
+  } else if (sub != 99 && sub != 51 && sub != 52 && sub != 53 && sub != 54 && sub != 55) {
+    fail(c.offset, "unknown TB" + std::to_string(sub));
+  }
+}
+
+// The mat, the cut window and settings that change nothing the simulation tracks.
+bool SimulatedDevice::gpgl_media(const ParsedCommand& c) {
+  const auto& p = c.params;
+  const std::string& n = c.name;
+  if (n == "TG") {
+    const int code = gpgl_int(c, p[0], "mat code");
     const Mat* loaded = options_.mat.empty() ? (profile_.mats.empty() ? nullptr : &profile_.mats.front())
                                              : profile_.mat(options_.mat);
     if (loaded && loaded->code != code)
@@ -341,31 +371,40 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
       fail(c.offset, n + " window corner " + fmt(corner) + " lies outside the cutting area " +
                          fmt(machine_min_) + ".." + fmt(machine_max_));
     (n == "Z" ? window_max_ : window_min_) = corner;
-  } else if (n == "J") {
-    const int h = as_int(p[0], "holder");
+  } else if (n == "FE" || n == "FY" || n == "FF" || n == "L" || n == "FO" || n == "FW" || n == "H") {
+    // Accepted settings that change nothing the simulation tracks (lift, overcut, feed, home).
+    if (n == "H") move_to({0, 0}, false, c.offset);
+  } else if (n == "SO") {
+    if (p[0] != 0) fail(c.offset, "SO takes 0");
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Holder, speed, force, blade offset, AutoBlade depth and acceleration.
+bool SimulatedDevice::gpgl_tool(const ParsedCommand& c) {
+  const auto& p = c.params;
+  const std::string& n = c.name;
+  if (n == "J") {
+    const int h = gpgl_int(c, p[0], "holder");
     if (h < 0 || h > profile_.holders)
       fail(c.offset, "J" + std::to_string(h) + ": holder does not exist (device has " +
                          std::to_string(profile_.holders) + ")");
     holder_ = h;
   } else if (n == "!") {
-    const int s = as_int(p[0], "speed");
-    if (s < profile_.speed_steps.min || s > profile_.speed_steps.max)
-      fail(c.offset, "speed " + std::to_string(s) + " out of range " +
-                         std::to_string(profile_.speed_steps.min) + ".." +
-                         std::to_string(profile_.speed_steps.max));
-    speed_[holder_arg(1)] = s;
+    const int s = gpgl_int(c, p[0], "speed");
+    check_steps(c, s, profile_.speed_steps, "speed");
+    speed_[gpgl_holder(c, 1)] = s;
   } else if (n == "FX") {
-    const int f = as_int(p[0], "force");
-    if (f < profile_.force_steps.min || f > profile_.force_steps.max)
-      fail(c.offset, "force " + std::to_string(f) + " out of range " +
-                         std::to_string(profile_.force_steps.min) + ".." +
-                         std::to_string(profile_.force_steps.max));
-    force_[holder_arg(1)] = f;
+    const int f = gpgl_int(c, p[0], "force");
+    check_steps(c, f, profile_.force_steps, "force");
+    force_[gpgl_holder(c, 1)] = f;
   } else if (n == "FC") {
     if (p[0] < 0 || p[0] > model_.max_blade_offset)
       fail(c.offset,
            "FC cutter offset " + fmt(p[0]) + " out of range 0.." + std::to_string(model_.max_blade_offset));
-    if (p.size() == 3) holder_arg(2);
+    if (p.size() == 3) gpgl_holder(c, 2);
   } else if (n == "TF") {
     if (!model_.autoblade_holder_1) fail(c.offset, "TF: the " + profile_.name + " has no AutoBlade");
     if (p[1] != 1) fail(c.offset, "TF sets the AutoBlade depth in holder 1 only, got holder " + fmt(p[1]));
@@ -376,21 +415,21 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
       fail(c.offset, "TJ acceleration " + fmt(p[0]) + " out of range 0..3");
   } else if (n == "*") {
     // Graphtec: * a,f[,n] acceleration and force.
-    const int a = as_int(p[0], "acceleration"), f = as_int(p[1], "force");
+    const int a = gpgl_int(c, p[0], "acceleration"), f = gpgl_int(c, p[1], "force");
     if (a < 1 || a > 3) fail(c.offset, "* acceleration " + std::to_string(a) + " out of range 1..3");
-    if (f < profile_.force_steps.min || f > profile_.force_steps.max)
-      fail(c.offset, "force " + std::to_string(f) + " out of range " +
-                         std::to_string(profile_.force_steps.min) + ".." +
-                         std::to_string(profile_.force_steps.max));
-    force_[holder_arg(2)] = f;
-  } else if (n == "FE" || n == "FY" || n == "FF" || n == "L" || n == "FO" || n == "FW" || n == "H") {
-    // Accepted settings that change nothing the simulation tracks (lift, overcut, feed, home).
-    if (n == "H") move_to({0, 0}, false, c.offset);
-  } else if (n == "SO") {
-    if (p[0] != 0) fail(c.offset, "SO takes 0");
-  } else if (n == "M") {
+    check_steps(c, f, profile_.force_steps, "force");
+    force_[gpgl_holder(c, 2)] = f;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool SimulatedDevice::gpgl_motion(const ParsedCommand& c) {
+  const auto& p = c.params;
+  if (c.name == "M") {
     move_to({p[0], p[1]}, false, c.offset);
-  } else if (n == "D") {
+  } else if (c.name == "D") {
     if (holder_ < 1) fail(c.offset, "D with no tool holder selected (J)");
     if (!speed_.count(holder_) || !force_.count(holder_))
       fail(c.offset,
@@ -398,8 +437,9 @@ void SimulatedDevice::execute_gpgl(const ParsedCommand& c) {
     for (std::size_t i = 0; i + 1 < p.size(); i += 2)
       move_to({p[i], p[i + 1]}, true, c.offset);
   } else {
-    fail(c.offset, "command " + n + " is not supported by this device");
+    return false;
   }
+  return true;
 }
 
 void SimulatedDevice::execute_hpgl(const ParsedCommand& c) {
@@ -486,129 +526,164 @@ Box2 SimulatedDevice::cut_bounds_mm() const {
   return box;
 }
 
-void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) const {
+namespace {
+
+// Cuts black, blade scores (a lighter pass than the holder's heaviest) blue, the scoring tool green, pen red.
+SimScene::Line styled_line(const SimStroke& s, ToolKind kind, int heaviest) {
+  SimScene::Line line;
+  if (kind == ToolKind::Pen)
+    line.rgb = {0.8, 0.1, 0.1};
+  else if (kind == ToolKind::Scorer)
+    line.rgb = {0.1, 0.55, 0.2};
+  else if (s.force < heaviest)
+    line.rgb = {0.1, 0.3, 0.8};
+  line.width_mm = kind == ToolKind::Blade && s.force >= heaviest ? 0.25 : 0.2;
+  return line;
+}
+
+void paint_mat_and_sheet(cairo_t* cr, const std::optional<Box2>& mat, const std::optional<Box2>& sheet) {
+  auto rect = [&](const Box2& b) { cairo_rectangle(cr, b.min.x, b.min.y, b.width(), b.height()); };
+  cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);  // outside the sheet
+  cairo_paint(cr);
+  if (mat) {
+    cairo_set_source_rgb(cr, 0.72, 0.80, 0.88);  // a light blue mat
+    rect(*mat);
+    cairo_fill(cr);
+  }
+  if (sheet) {
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    rect(*sheet);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
+    cairo_set_line_width(cr, 0.3);
+    cairo_stroke(cr);
+  }
+}
+
+// As printed: the square and the two L brackets, in ink grey under the strokes.
+void paint_marks(cairo_t* cr, const PrintedMarks& pm) {
+  cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+  cairo_rectangle(cr, pm.origin_mm.x, pm.origin_mm.y, pm.square_mm, pm.square_mm);
+  cairo_fill(cr);
+  const double h = pm.stroke_mm / 2, a = pm.arm_mm;
+  const Vec2 tr{pm.origin_mm.x + pm.extent_mm.x - h, pm.origin_mm.y + h};
+  const Vec2 bl{pm.origin_mm.x + h, pm.origin_mm.y + pm.extent_mm.y - h};
+  cairo_set_line_width(cr, pm.stroke_mm);
+  cairo_move_to(cr, tr.x - a + h, tr.y);
+  cairo_line_to(cr, tr.x, tr.y);
+  cairo_line_to(cr, tr.x, tr.y + a - h);
+  cairo_move_to(cr, bl.x, bl.y - a + h);
+  cairo_line_to(cr, bl.x, bl.y);
+  cairo_line_to(cr, bl.x + a - h, bl.y);
+  cairo_stroke(cr);
+}
+
+void paint_cross(cairo_t* cr, Vec2 at, double r, double red, double green, double blue) {
+  cairo_set_source_rgb(cr, red, green, blue);
+  cairo_set_line_width(cr, 0.4);
+  cairo_move_to(cr, at.x - r, at.y);
+  cairo_line_to(cr, at.x + r, at.y);
+  cairo_move_to(cr, at.x, at.y - r);
+  cairo_line_to(cr, at.x, at.y + r);
+  cairo_stroke(cr);
+}
+
+void paint_line(cairo_t* cr, const std::vector<Vec2>& points, double r, double g, double b, double width_mm) {
+  cairo_set_source_rgb(cr, r, g, b);
+  cairo_set_line_width(cr, width_mm);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i == 0)
+      cairo_move_to(cr, points[i].x, points[i].y);
+    else
+      cairo_line_to(cr, points[i].x, points[i].y);
+  }
+  cairo_stroke(cr);
+}
+
+// A PNG (at `png_dpi`) or SVG of w_mm x h_mm drawn by `paint` in millimetres, written to `out`.
+void write_picture(const std::filesystem::path& path, std::ostream& out, bool png, double png_dpi,
+                   double w_mm, double h_mm, const std::function<void(cairo_t*)>& paint) {
+  const double scale = png ? png_dpi / 25.4 : 72.0 / 25.4;
+  cairo_surface_t* surface =
+      png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24,
+                                       std::max(1, static_cast<int>(std::ceil(w_mm * scale))),
+                                       std::max(1, static_cast<int>(std::ceil(h_mm * scale))))
+          : cairo_svg_surface_create_for_stream(write_to_stream, &out, w_mm * scale, h_mm * scale);
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, scale, scale);
+  paint(cr);
+  cairo_destroy(cr);
+  cairo_surface_flush(surface);
+  cairo_status_t st = CAIRO_STATUS_SUCCESS;
+  if (png)
+    st = cairo_surface_write_to_png_stream(surface, write_to_stream, &out);
+  else
+    cairo_surface_finish(surface);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (st != CAIRO_STATUS_SUCCESS) throw OutputError(path.string(), cairo_status_to_string(st));
+}
+
+}  // namespace
+
+SimScene SimulatedDevice::scene() const {
+  SimScene sc;
   const Vec2 origin = mark_origin_.value_or(Vec2{0, 0});
   auto page = [&](Vec2 d) { return device_to_page(profile_, d + origin, area_mm_); };
-  Box2 box;
-  box.add(Vec2{0, 0});
+  sc.box.add(Vec2{0, 0});
   for (const SimStroke& s : strokes_) {
     for (Vec2 q : s.points)
-      box.add(page(q));
+      sc.box.add(page(q));
   }
-  // The mat (when it is a sheet-sized one, not a roll), the loaded sheet and the machine's origin.
   constexpr double kLargestMatDrawnMm = 1000;
-  std::optional<Box2> mat_box, sheet_box;
   const Mat* loaded = options_.mat.empty() ? (profile_.mats.empty() ? nullptr : &profile_.mats.front())
                                            : profile_.mat(options_.mat);
   if (loaded && loaded->code && *loaded->code != 0 && loaded->length_mm <= kLargestMatDrawnMm)
-    mat_box = Box2{{0, 0}, {loaded->width_mm, loaded->length_mm}};
-  if (options_.sheet_mm) sheet_box = Box2{{0, 0}, *options_.sheet_mm};
-  const Vec2 machine_origin = device_to_page(profile_, {0, 0}, area_mm_);
-  for (const auto& b : {mat_box, sheet_box}) {
+    sc.mat = Box2{{0, 0}, {loaded->width_mm, loaded->length_mm}};
+  if (options_.sheet_mm) sc.sheet = Box2{{0, 0}, *options_.sheet_mm};
+  sc.machine_origin = device_to_page(profile_, {0, 0}, area_mm_);
+  for (const auto& b : {sc.mat, sc.sheet}) {
     if (b) {
-      box.add(b->min);
-      box.add(b->max);
+      sc.box.add(b->min);
+      sc.box.add(b->max);
     }
   }
-  box.add(machine_origin);
-  constexpr double kBorderMm = 5;
-  const double w_mm = box.width() + 2 * kBorderMm, h_mm = box.height() + 2 * kBorderMm;
+  sc.box.add(sc.machine_origin);
+  if (mark_origin_) sc.search_origin = page({0, 0});
+  std::map<int, int> blade_max_force;
+  for (const SimStroke& s : strokes_)
+    blade_max_force[s.holder] = std::max(blade_max_force[s.holder], s.force);
+  for (const SimStroke& s : strokes_) {
+    const auto it = options_.mounted.find(s.holder);
+    const ToolKind kind = it == options_.mounted.end() ? ToolKind::Blade : it->second;
+    SimScene::Line line = styled_line(s, kind, blade_max_force[s.holder]);
+    for (Vec2 q : s.points)
+      line.points.push_back(page(q));
+    sc.lines.push_back(std::move(line));
+  }
+  return sc;
+}
+
+void SimulatedDevice::render(const std::filesystem::path& path, double png_dpi) const {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
   if (ext != ".png" && ext != ".svg")
     throw OutputError(path.string(), "the simulated device renders .png or .svg, not \"" + ext + "\"");
-  std::map<int, int> blade_max_force;
-  for (const SimStroke& s : strokes_)
-    blade_max_force[s.holder] = std::max(blade_max_force[s.holder], s.force);
-
+  const SimScene sc = scene();
+  constexpr double kBorderMm = 5;
+  const double w_mm = sc.box.width() + 2 * kBorderMm, h_mm = sc.box.height() + 2 * kBorderMm;
   write_file_atomically(path, [&](std::ostream& out) {
-    const bool png = ext == ".png";
-    const double scale = png ? png_dpi / 25.4 : 72.0 / 25.4;
-    cairo_surface_t* surface =
-        png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24,
-                                         std::max(1, static_cast<int>(std::ceil(w_mm * scale))),
-                                         std::max(1, static_cast<int>(std::ceil(h_mm * scale))))
-            : cairo_svg_surface_create_for_stream(write_to_stream, &out, w_mm * scale, h_mm * scale);
-    cairo_t* cr = cairo_create(surface);
-    cairo_scale(cr, scale, scale);
-    cairo_translate(cr, kBorderMm - box.min.x, kBorderMm - box.min.y);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    auto rect = [&](const Box2& b) { cairo_rectangle(cr, b.min.x, b.min.y, b.width(), b.height()); };
-    cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);  // outside the sheet
-    cairo_paint(cr);
-    if (mat_box) {
-      cairo_set_source_rgb(cr, 0.72, 0.80, 0.88);  // a light blue mat
-      rect(*mat_box);
-      cairo_fill(cr);
-    }
-    if (sheet_box) {
-      cairo_set_source_rgb(cr, 1, 1, 1);
-      rect(*sheet_box);
-      cairo_fill_preserve(cr);
-      cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
-      cairo_set_line_width(cr, 0.3);
-      cairo_stroke(cr);
-    }
-    if (const auto& pm = options_.printed_marks) {
-      // As printed: the square and the two L brackets, in ink grey under the strokes.
-      cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-      cairo_rectangle(cr, pm->origin_mm.x, pm->origin_mm.y, pm->square_mm, pm->square_mm);
-      cairo_fill(cr);
-      const double h = pm->stroke_mm / 2, a = pm->arm_mm;
-      const Vec2 tr{pm->origin_mm.x + pm->extent_mm.x - h, pm->origin_mm.y + h};
-      const Vec2 bl{pm->origin_mm.x + h, pm->origin_mm.y + pm->extent_mm.y - h};
-      cairo_set_line_width(cr, pm->stroke_mm);
-      cairo_move_to(cr, tr.x - a + h, tr.y);
-      cairo_line_to(cr, tr.x, tr.y);
-      cairo_line_to(cr, tr.x, tr.y + a - h);
-      cairo_move_to(cr, bl.x, bl.y - a + h);
-      cairo_line_to(cr, bl.x, bl.y);
-      cairo_line_to(cr, bl.x + a - h, bl.y);
-      cairo_stroke(cr);
-    }
-    auto cross = [&](Vec2 at, double r, double red, double green, double blue) {
-      cairo_set_source_rgb(cr, red, green, blue);
-      cairo_set_line_width(cr, 0.4);
-      cairo_move_to(cr, at.x - r, at.y);
-      cairo_line_to(cr, at.x + r, at.y);
-      cairo_move_to(cr, at.x, at.y - r);
-      cairo_line_to(cr, at.x, at.y + r);
-      cairo_stroke(cr);
-    };
-    cross(machine_origin, 4, 0.85, 0.1, 0.1);                 // the machine's origin
-    if (mark_origin_) cross(page({0, 0}), 3, 0.9, 0.5, 0.0);  // where the mark search put (0,0)
-    for (const SimStroke& s : strokes_) {
-      const auto it = options_.mounted.find(s.holder);
-      const ToolKind kind = it == options_.mounted.end() ? ToolKind::Blade : it->second;
-      if (kind == ToolKind::Pen)
-        cairo_set_source_rgb(cr, 0.8, 0.1, 0.1);
-      else if (kind == ToolKind::Scorer)
-        cairo_set_source_rgb(cr, 0.1, 0.55, 0.2);
-      else if (s.force < blade_max_force[s.holder])
-        cairo_set_source_rgb(cr, 0.1, 0.3, 0.8);  // a lighter blade pass: a score, not a cut
-      else
-        cairo_set_source_rgb(cr, 0, 0, 0);
-      cairo_set_line_width(cr, kind == ToolKind::Blade && s.force >= blade_max_force[s.holder] ? 0.25 : 0.2);
-      for (std::size_t i = 0; i < s.points.size(); ++i) {
-        const Vec2 q = page(s.points[i]);
-        if (i == 0)
-          cairo_move_to(cr, q.x, q.y);
-        else
-          cairo_line_to(cr, q.x, q.y);
-      }
-      cairo_stroke(cr);
-    }
-    cairo_destroy(cr);
-    cairo_surface_flush(surface);
-    cairo_status_t st = CAIRO_STATUS_SUCCESS;
-    if (png)
-      st = cairo_surface_write_to_png_stream(surface, write_to_stream, &out);
-    else
-      cairo_surface_finish(surface);
-    if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
-    cairo_surface_destroy(surface);
-    if (st != CAIRO_STATUS_SUCCESS) throw OutputError(path.string(), cairo_status_to_string(st));
+    write_picture(path, out, ext == ".png", png_dpi, w_mm, h_mm, [&](cairo_t* cr) {
+      cairo_translate(cr, kBorderMm - sc.box.min.x, kBorderMm - sc.box.min.y);
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+      paint_mat_and_sheet(cr, sc.mat, sc.sheet);
+      if (options_.printed_marks) paint_marks(cr, *options_.printed_marks);
+      paint_cross(cr, sc.machine_origin, 4, 0.85, 0.1, 0.1);
+      if (sc.search_origin) paint_cross(cr, *sc.search_origin, 3, 0.9, 0.5, 0.0);
+      for (const SimScene::Line& l : sc.lines)
+        paint_line(cr, l.points, l.rgb[0], l.rgb[1], l.rgb[2], l.width_mm);
+    });
   });
 }
 

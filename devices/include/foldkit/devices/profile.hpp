@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foldkit/geom/vec.hpp"
@@ -31,6 +32,9 @@ enum class FoldMethod {
 const char* protocol_name(Protocol p);
 const char* tool_kind_name(ToolKind k);
 const char* fold_method_name(FoldMethod m);
+/// Every fold method by its name, in the order help text lists them: the one table profiles, --fold-method
+/// and fold_method_name read.
+const std::vector<std::pair<std::string, FoldMethod>>& fold_method_choices();
 
 /// An inclusive range of a device setting in device steps.
 struct StepRange {

@@ -3,6 +3,7 @@
 // device would be expected to, keeps tool, pen and position state, answers status and registration-mark
 // queries, can be told to fail, and renders what it cut, scored and drew. Used by --dry-run and by the
 // round-trip tests (sheet -> job -> bytes -> strokes back).
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <filesystem>
@@ -45,6 +46,22 @@ struct SimStroke {
   int holder = 1;
   int force = 0, speed = 0;
   std::vector<Vec2> points;
+};
+
+/// What the simulated device's rendering shows, in page millimetres (sheet orientation): the mat (when it is
+/// a sheet-sized one, not a roll), the loaded sheet, the machine's origin, where the mark search put (0,0),
+/// and each stroke with its colour and width.
+struct SimScene {
+  struct Line {
+    std::vector<Vec2> points;
+    std::array<double, 3> rgb{0, 0, 0};  ///< cuts black, blade scores blue, scoring tool green, pen red
+    double width_mm = 0.2;
+  };
+  Box2 box;  ///< everything drawn
+  std::optional<Box2> mat, sheet;
+  Vec2 machine_origin;
+  std::optional<Vec2> search_origin;
+  std::vector<Line> lines;
 };
 
 /// A Transport that executes HP-GL or GP-GL on a simulated machine: its facts (mats and TG codes, axes,
@@ -91,10 +108,22 @@ class SimulatedDevice final : public Transport {
   /// (a red cross): cuts black, blade scores blue, scoring tool green, pen red. After a fault it shows
   /// the strokes done so far. Atomic write.
   void render(const std::filesystem::path& path, double png_dpi = 150) const;
+  /// What render() draws, in page millimetres.
+  SimScene scene() const;
 
  private:
   void execute(const ParsedCommand& c);
   void execute_gpgl(const ParsedCommand& c);
+  // The GP-GL commands by kind; each returns false for a command that is not of its kind.
+  bool gpgl_session(const ParsedCommand& c);  // ESC 05, FG, ESC 04: answered before initialisation
+  bool gpgl_query(const ParsedCommand& c);
+  void gpgl_tb(const ParsedCommand& c);
+  bool gpgl_media(const ParsedCommand& c);
+  bool gpgl_tool(const ParsedCommand& c);
+  bool gpgl_motion(const ParsedCommand& c);
+  int gpgl_int(const ParsedCommand& c, double v, const char* what);
+  int gpgl_holder(const ParsedCommand& c, std::size_t i);  // parameter i, else the selected holder
+  void check_steps(const ParsedCommand& c, int value, const StepRange& range, const char* what);
   void execute_hpgl(const ParsedCommand& c);
   void move_to(Vec2 p, bool down, std::size_t offset);
   void pen_up();
