@@ -66,7 +66,7 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     // narrow notches and slits inside one piece (the MST baseline makes some) can lack it.
     for (SeamId s : plan.dropped)
       EXPECT_EQ(seams[s.index()].sides[0].piece, seams[s.index()].sides[1].piece)
-          << name << ": seam " << s.value();
+          << name << ": seam " << s.index();
     EXPECT_GT(placed, 0.8 * seams.size()) << name;
   }
 }
