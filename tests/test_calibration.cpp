@@ -33,9 +33,7 @@ using namespace foldkit::devices;
 
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
 using foldkit::test::slurp;
 
@@ -155,8 +153,8 @@ TEST(Calibration, MalformedForeignOrAbsurdFilesAreInputErrorsNamingTheKey) {
 }
 
 TEST(Calibration, TheOffsetShiftsEveryStrokeOfAPrintAndCutJobByExactlyThatMuch) {
-  const DeviceProfile& cameo = profiles().device("cameo4");
-  const MediaProfile& paper = profiles().medium("copy-80");
+  const DeviceProfile& cameo = builtin_profiles().device("cameo4");
+  const MediaProfile& paper = builtin_profiles().medium("copy-80");
   const auto page = layout::calibration_page();
   PlanOptions plain;
   plain.regmarks = true;
@@ -172,21 +170,22 @@ TEST(Calibration, TheOffsetShiftsEveryStrokeOfAPrintAndCutJobByExactlyThatMuch) 
 }
 
 TEST(Calibration, WithoutRegistrationMarksTheOffsetDoesNothing) {
-  const DeviceProfile& cameo = profiles().device("cameo4");
+  const DeviceProfile& cameo = builtin_profiles().device("cameo4");
   const auto page = layout::calibration_page();
   PlanOptions shifted;
   shifted.print_cut_offset_mm = {0.8, -1.2};
-  EXPECT_EQ(encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), {})),
-            encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), shifted)));
+  EXPECT_EQ(encode_gpgl(plan_job(page.sheet, cameo, builtin_profiles().medium("copy-80"), {})),
+            encode_gpgl(plan_job(page.sheet, cameo, builtin_profiles().medium("copy-80"), shifted)));
 }
 
 TEST(Calibration, TheSimulatedDeviceCutsTheCrossesOffTheirPrintByTheOffset) {
-  const DeviceProfile& cameo = profiles().device("cameo4");
+  const DeviceProfile& cameo = builtin_profiles().device("cameo4");
   const auto page = layout::calibration_page();
   PlanOptions plan;
   plan.regmarks = true;
   plan.print_cut_offset_mm = {0.8, -1.2};
-  const std::string stream = encode_gpgl(plan_job(page.sheet, cameo, profiles().medium("copy-80"), plan));
+  const std::string stream =
+      encode_gpgl(plan_job(page.sheet, cameo, builtin_profiles().medium("copy-80"), plan));
   SimulatedDevice sim(cameo);
   SendOptions send;
   send.protocol = Protocol::Gpgl;
@@ -231,7 +230,8 @@ TEST(Calibration, AnOffsetEnteredOnceShiftsEveryLaterCutJobOnThatDevice) {
 
   // A new process, which knows the offset only from the file.
   const std::string after = cut_to("after.gpgl");
-  expect_shifted(runs_of(before), runs_of(after), device_delta(profiles().device("cameo4"), {0.8, -1.2}));
+  expect_shifted(runs_of(before), runs_of(after),
+                 device_delta(builtin_profiles().device("cameo4"), {0.8, -1.2}));
 
   // --reset takes the correction back.
   ASSERT_EQ(test::run_foldkit({"calibrate", "--device", "cameo4", "--reset"}).exit_code, 0);

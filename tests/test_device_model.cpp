@@ -17,12 +17,10 @@
 namespace foldkit::devices {
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
 const MediaProfile& paper() {
-  return profiles().medium("copy-80");
+  return builtin_profiles().medium("copy-80");
 }
 
 constexpr Vec2 kA4{210, 297};
@@ -70,7 +68,7 @@ TEST_P(TopLeftMark, LandsWhereThatMachinePutsTheSheetsTopLeftCorner) {
   PlanOptions o;
   o.fold_method = FoldMethod::None;
   o.order = false;
-  const Job job = plan_job(a4_mark_corner(), profiles().device(l.device), paper(), o);
+  const Job job = plan_job(a4_mark_corner(), builtin_profiles().device(l.device), paper(), o);
   ASSERT_EQ(job.passes.size(), 1u);
   EXPECT_EQ(job.passes[0].strokes[0].points[0], l.at) << l.device;
 }
@@ -93,32 +91,30 @@ INSTANTIATE_TEST_SUITE_P(Profiles, TopLeftMark,
 
 TEST(MachineModel, IsBuiltInForEveryRealProfileAndTakenFromTheProfileOtherwise) {
   for (const char* id : {"cameo3", "cameo4", "cameo5", "portrait3", "curio", "ce6000", "roland-gx24"})
-    EXPECT_FALSE(machine_model(profiles().device(id)).from_profile) << id;
-  EXPECT_TRUE(machine_model(profiles().device("generic-hpgl")).from_profile);
-  EXPECT_TRUE(machine_model(profiles().device("test")).from_profile);
+    EXPECT_FALSE(machine_model(builtin_profiles().device(id)).from_profile) << id;
+  EXPECT_TRUE(machine_model(builtin_profiles().device("generic-hpgl")).from_profile);
+  EXPECT_TRUE(machine_model(builtin_profiles().device("test")).from_profile);
 }
 
 TEST(MachineModel, PassesEveryJobFoldkitWritesForEveryProfile) {
   PlanOptions o;
   o.fold_method = FoldMethod::None;
-  for (const DeviceProfile& d : profiles().devices) {
+  for (const DeviceProfile& d : builtin_profiles().devices) {
     Sheet s = d.area_width_mm >= kA4.x ? a4_mark_corner() : test::two_piece_sheet();
     EXPECT_EQ(dry_run(d, s, o), "") << d.id;
   }
 }
 
-const StrokeFont& font() {
-  return foldkit::test::pen_font();
-}
+using foldkit::test::pen_font;
 
 TEST(MachineModel, PassesEveryProfilesFullJobWithLabelsFoldsAndMarks) {
   // Everything a cut writes: labels with the pen where there is one, folds by the profile's own method,
   // and on a machine with a mark sensor the printed marks searched; the sheet fits every bed.
-  for (const DeviceProfile& d : profiles().devices) {
+  for (const DeviceProfile& d : builtin_profiles().devices) {
     Sheet s = test::two_piece_sheet({15, 15});  // 120 x 60 mm: the test device's bed is 120 mm wide
     PlanOptions o;
     o.draw_labels = d.tool(ToolKind::Pen) != nullptr;
-    o.font = &font();
+    o.font = &pen_font();
     SimOptions so;
     if (d.regmarks.supported && d.protocol == Protocol::Gpgl) {
       test::add_regmarks(s, {4, 4}, {s.size_mm.x - 4, s.size_mm.y - 4}, 10);
@@ -130,14 +126,14 @@ TEST(MachineModel, PassesEveryProfilesFullJobWithLabelsFoldsAndMarks) {
 }
 
 TEST(MachineModel, RefusesAPortrait3ProfileThatSendsTheCameosMat) {
-  DeviceProfile wrong = profiles().device("portrait3");
+  DeviceProfile wrong = builtin_profiles().device("portrait3");
   wrong.mats.front().code = 1;  // the old profile: TG1 is the Cameo's 12x12 mat
   const std::string e = dry_run(wrong, a4_mark_corner(), {});
   EXPECT_NE(e.find("job expects mat TG1 but mat 8x12 (TG3) is loaded"), std::string::npos) << e;
 }
 
 TEST(MachineModel, RefusesARolandProfileThatMeasuresTheCarriageFromTheFarEnd) {
-  DeviceProfile wrong = profiles().device("roland-gx24");
+  DeviceProfile wrong = builtin_profiles().device("roland-gx24");
   wrong.axes.carriage_reversed = true;  // the old profile: 584 - x
   wrong.axes.origin_at_media = false;
   const std::string e = dry_run(wrong, a4_mark_corner(), {});
@@ -145,14 +141,14 @@ TEST(MachineModel, RefusesARolandProfileThatMeasuresTheCarriageFromTheFarEnd) {
 }
 
 TEST(MachineModel, RefusesSilhouetteCommandsOnTheCe6000) {
-  DeviceProfile wrong = profiles().device("ce6000");
+  DeviceProfile wrong = builtin_profiles().device("ce6000");
   wrong.gpgl_family = GpglFamily::Cameo3;  // the old stream: ESC 05, FG, TB71, FA, TG, FN, FX...
   const std::string e = dry_run(wrong, a4_mark_corner(), {});
   EXPECT_NE(e.find("is not one the Graphtec CE6000-60 takes"), std::string::npos) << e;
 }
 
 TEST(MachineModel, RefusesHpglFsOnTheRoland) {
-  DeviceProfile wrong = profiles().device("roland-gx24");
+  DeviceProfile wrong = builtin_profiles().device("roland-gx24");
   wrong.hpgl_force_command = "FS";
   const std::string e = dry_run(wrong, a4_mark_corner(), {});
   EXPECT_NE(e.find("command FS is not one the Roland GX-24 takes"), std::string::npos) << e;
@@ -176,14 +172,14 @@ TEST(MachineModel, FindsPrintedMarksAndCutsRelativeToWhereTheyReallyAre) {
   // 10 mm before the expected mark still finds them.
   Sheet printed = a4_with_marks(15, 20, {-2, -2});
   so.printed_marks = printed_marks(printed);
-  EXPECT_EQ(dry_run(profiles().device("cameo4"), a4_with_marks(15, 20), o, so), "");
+  EXPECT_EQ(dry_run(builtin_profiles().device("cameo4"), a4_with_marks(15, 20), o, so), "");
 }
 
 TEST(MachineModel, MissesMarksWhenTheSearchStartsOnTheMarkAndThePrintIsShifted) {
   PlanOptions o;
   o.regmarks = true;
   o.fold_method = FoldMethod::None;
-  const DeviceProfile& d = profiles().device("cameo4");
+  const DeviceProfile& d = builtin_profiles().device("cameo4");
   const Sheet layout = a4_with_marks(15, 20);
   Job job = plan_job(layout, d, paper(), o);
   job.regmarks->start_a = job.regmarks->origin_a;  // the old search start: exactly on the mark
@@ -203,7 +199,7 @@ TEST(MachineModel, RefusesToCutWhenTheSearchCommandDoesNotDescribeThePrintedMark
   PlanOptions o;
   o.regmarks = true;
   o.fold_method = FoldMethod::None;
-  const DeviceProfile& d = profiles().device("cameo3");
+  const DeviceProfile& d = builtin_profiles().device("cameo3");
   Job job = plan_job(a4_with_marks(15, 15), d, paper(), o);
   job.regmarks->arm_length = 400;  // the old stream: TB51,400 whatever was printed
   SimOptions so;

@@ -17,13 +17,9 @@
 namespace foldkit::devices {
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
-const StrokeFont& font() {
-  return foldkit::test::pen_font();
-}
+using foldkit::test::pen_font;
 
 struct Case {
   std::string name;
@@ -41,7 +37,7 @@ Sheet square() {
 std::vector<Case> cases() {
   PlanOptions labels;
   labels.draw_labels = true;
-  labels.font = &font();
+  labels.font = &pen_font();
   PlanOptions overcut;
   overcut.overcut_mm = 1;
   Sheet marked = test::two_piece_sheet({15, 15});
@@ -58,7 +54,8 @@ class GpglGolden : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(GpglGolden, MatchesTheReviewedStream) {
   const Case c = cases()[GetParam()];
-  const Job job = plan_job(c.sheet, profiles().device("test"), profiles().medium("cardstock-220"), c.options);
+  const Job job = plan_job(c.sheet, builtin_profiles().device("test"),
+                           builtin_profiles().medium("cardstock-220"), c.options);
   test::expect_golden(c.name + ".gpgl", encode_gpgl(job));
 }
 
@@ -66,8 +63,8 @@ INSTANTIATE_TEST_SUITE_P(TestDevice, GpglGolden, ::testing::Range<std::size_t>(0
                          [](const auto& info) { return cases()[info.param].name; });
 
 TEST(Gpgl, EndsEveryCommandWithEtxAndParsesStrictly) {
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("copy-80"));
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("copy-80"));
   const std::string s = encode_gpgl(job);
   GpglParser parser;
   const auto commands = parser.feed(stream_bytes(s));
@@ -77,7 +74,8 @@ TEST(Gpgl, EndsEveryCommandWithEtxAndParsesStrictly) {
 }
 
 TEST(Gpgl, OpensWithTheHandshakeOfTheCameo3Recording) {
-  const Job job = plan_job(square(), profiles().device("cameo3"), profiles().medium("copy-80"));
+  const Job job =
+      plan_job(square(), builtin_profiles().device("cameo3"), builtin_profiles().medium("copy-80"));
   const std::string s = encode_gpgl(job);
   // ESC 05, FG, ESC 04, TB71, FA as in the recorded session; then mat, portrait and the 12x12 window.
   EXPECT_EQ(s.substr(0, 15), std::string("\x1b\x05"
@@ -95,9 +93,9 @@ TEST(Gpgl, OpensWithTheHandshakeOfTheCameo3Recording) {
 TEST(Gpgl, SetsUpEachPassesHolderSpeedAndForceBeforeItsStrokes) {
   PlanOptions o;
   o.draw_labels = true;
-  o.font = &font();
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("cardstock-220"), o);
+  o.font = &pen_font();
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("test"),
+                           builtin_profiles().medium("cardstock-220"), o);
   ASSERT_GE(job.passes.size(), 3u);
   const std::string s = encode_gpgl(job);
   std::size_t from = 0;
@@ -122,7 +120,8 @@ TEST(Gpgl, SendsOnePointPerDrawCommandAsTheReferenceDoes) {
   for (int i = 0; i < 200; ++i)
     circle.points_mm.push_back({50 + 30 * std::cos(i * 0.0314159), 50 + 30 * std::sin(i * 0.0314159)});
   s.paths.push_back(circle);
-  const std::string out = encode_gpgl(plan_job(s, profiles().device("test"), profiles().medium("copy-80")));
+  const std::string out =
+      encode_gpgl(plan_job(s, builtin_profiles().device("test"), builtin_profiles().medium("copy-80")));
   std::size_t draws = 0;
   for (std::size_t at = out.find("\x03"
                                  "D");
@@ -138,8 +137,8 @@ TEST(Gpgl, SearchesTheRegistrationMarksBeforeAnyStroke) {
   test::add_regmarks(marked, {2, 2}, {110, 60});
   PlanOptions o;
   o.regmarks = true;
-  const std::string s =
-      encode_gpgl(plan_job(marked, profiles().device("cameo4"), profiles().medium("copy-80"), o));
+  const std::string s = encode_gpgl(
+      plan_job(marked, builtin_profiles().device("cameo4"), builtin_profiles().medium("copy-80"), o));
   const std::size_t search = s.find("TB123,");
   ASSERT_NE(search, std::string::npos);
   EXPECT_LT(search, s.find("\x03M"));
@@ -161,7 +160,7 @@ TEST(Gpgl, AbortTailLiftsTheToolAndEndsTheJob) {
 
 // Settings that make the recorded Cameo 3 values come out: 70 gf = FX10, 50 mm/s = !5, depth 1.
 MediaProfile studio_media(double force_gf, double speed_mm_s) {
-  MediaProfile m = profiles().medium("copy-80");
+  MediaProfile m = builtin_profiles().medium("copy-80");
   m.cut = {force_gf, speed_mm_s, 1, 1};
   return m;
 }
@@ -195,7 +194,7 @@ std::string end_of(const std::string& s) {
 std::string stream_for(const std::string& device, const MediaProfile& media, const Sheet& sheet = a4_square(),
                        PlanOptions o = {}) {
   o.fold_method = FoldMethod::None;
-  return encode_gpgl(plan_job(sheet, profiles().device(device), media, o));
+  return encode_gpgl(plan_job(sheet, builtin_profiles().device(device), media, o));
 }
 
 TEST(GpglFamily, Cameo3SetUpIsTheRecordedStudioSequenceWithAutoBladeDepth) {
@@ -279,7 +278,8 @@ TEST(GpglFamily, AutoBladeDepthGoesOnlyToTheAutoBladeNotToPenOrScorer) {
   o.fold_method = FoldMethod::Scorer;
   Sheet s = a4_square();
   s.paths.push_back({PathRole::Valley, {{20, 50}, {60, 50}}, false, 0, false});
-  const std::string out = encode_gpgl(plan_job(s, profiles().device("cameo3"), studio_media(70, 50), o));
+  const std::string out =
+      encode_gpgl(plan_job(s, builtin_profiles().device("cameo3"), studio_media(70, 50), o));
   // The scoring tool in holder 2 gets FF0,0 and no TF; the AutoBlade in holder 1 gets TF3 only once.
   EXPECT_NE(out.find("J2\x03!"), std::string::npos);
   EXPECT_NE(out.find("FF0,0,2\x03"), std::string::npos);
@@ -324,7 +324,8 @@ TEST(GpglFamily, MachinesWithoutASilhouetteSensorRefusePrintAndCutBeforeAnyByte)
   PlanOptions o;
   o.regmarks = true;
   for (const char* device : {"ce6000", "roland-gx24"})
-    EXPECT_THROW(plan_job(s, profiles().device(device), studio_media(70, 50), o), DeviceError) << device;
+    EXPECT_THROW(plan_job(s, builtin_profiles().device(device), studio_media(70, 50), o), DeviceError)
+        << device;
 }
 
 TEST(GpglFamily, RefusesMarksTheSensorCannotFind) {
@@ -345,7 +346,9 @@ TEST(GpglFamily, RefusesMarksTheSensorCannotFind) {
 TEST(GpglFamily, EverySilhouetteGetsTheSameForceForTheSameCard) {
   // One FX scale, 1-33 at about 7 gf per step [IS][PS][ST]: 180 gf card is FX26 on every model.
   for (const char* d : {"cameo3", "cameo4", "cameo5", "portrait3", "curio"})
-    EXPECT_EQ(force_step(profiles().device(d), profiles().medium("cardstock-220").cut.force_gf), 26) << d;
+    EXPECT_EQ(
+        force_step(builtin_profiles().device(d), builtin_profiles().medium("cardstock-220").cut.force_gf), 26)
+        << d;
 }
 
 TEST(GpglFamily, EveryTgCodeIsOneOfTheReferenceTable) {
@@ -353,7 +356,7 @@ TEST(GpglFamily, EveryTgCodeIsOneOfTheReferenceTable) {
   // 9 Pro 24x24, 11 Portrait 8.5x12, with these sizes (width x length, inches).
   const std::map<int, std::pair<double, double>> table = {{1, {12, 12}}, {2, {12, 24}}, {3, {8, 12}},
                                                           {8, {15, 15}}, {9, {24, 24}}, {11, {8.5, 12}}};
-  for (const DeviceProfile& d : profiles().devices) {
+  for (const DeviceProfile& d : builtin_profiles().devices) {
     for (const Mat& m : d.mats) {
       if (!m.code || *m.code == 0 || d.id.starts_with("test")) continue;
       ASSERT_TRUE(table.count(*m.code)) << d.id << " mat " << m.id << " TG" << *m.code;

@@ -20,13 +20,9 @@
 namespace foldkit::devices {
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
-const StrokeFont& font() {
-  return foldkit::test::pen_font();
-}
+using foldkit::test::pen_font;
 
 Sheet square() {
   Sheet s;
@@ -44,7 +40,7 @@ struct Case {
 std::vector<Case> cases() {
   PlanOptions labels;
   labels.draw_labels = true;
-  labels.font = &font();
+  labels.font = &pen_font();
   return {{"square", square(), {}}, {"two_pieces_with_labels", test::two_piece_sheet(), labels}};
 }
 
@@ -52,8 +48,8 @@ class HpglGolden : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(HpglGolden, MatchesTheReviewedStream) {
   const Case c = cases()[GetParam()];
-  const Job job =
-      plan_job(c.sheet, profiles().device("test-hpgl"), profiles().medium("cardstock-220"), c.options);
+  const Job job = plan_job(c.sheet, builtin_profiles().device("test-hpgl"),
+                           builtin_profiles().medium("cardstock-220"), c.options);
   test::expect_golden(c.name + ".plt", encode_hpgl(job));
 }
 
@@ -61,8 +57,8 @@ INSTANTIATE_TEST_SUITE_P(TestDevice, HpglGolden, ::testing::Range<std::size_t>(0
                          [](const auto& info) { return cases()[info.param].name; });
 
 TEST(Hpgl, InitialisesSelectsTheToolAndEndsWithIn) {
-  const std::string s =
-      encode_hpgl(plan_job(square(), profiles().device("test-hpgl"), profiles().medium("copy-80")));
+  const std::string s = encode_hpgl(
+      plan_job(square(), builtin_profiles().device("test-hpgl"), builtin_profiles().medium("copy-80")));
   EXPECT_EQ(s.substr(0, 6), "IN;PA;");
   EXPECT_NE(s.find("SP1;VS10;FS8;"), std::string::npos);  // 100 mm/s, 80 gf at 10 gf per step
   EXPECT_EQ(s.substr(s.size() - 3), "IN;");
@@ -74,15 +70,15 @@ TEST(Hpgl, InitialisesSelectsTheToolAndEndsWithIn) {
 TEST(Hpgl, FlipsYForABottomLeftOrigin) {
   // The test device's origin is bottom left with y up: page y 20 and 40 on a 150 mm area are device y
   // 130 and 110 mm; the cut starts at the corner nearest the origin, page (10, 40).
-  const std::string s =
-      encode_hpgl(plan_job(square(), profiles().device("test-hpgl"), profiles().medium("copy-80")));
+  const std::string s = encode_hpgl(
+      plan_job(square(), builtin_profiles().device("test-hpgl"), builtin_profiles().medium("copy-80")));
   EXPECT_NE(s.find("PU400,4400;PD400,5200;"), std::string::npos) << s;
 }
 
 TEST(Hpgl, LeavesOutTheForceCommandForDevicesThatTakeItFromThePanel) {
-  DeviceProfile d = profiles().device("test-hpgl");
+  DeviceProfile d = builtin_profiles().device("test-hpgl");
   d.hpgl_force_command.clear();
-  const std::string s = encode_hpgl(plan_job(square(), d, profiles().medium("copy-80")));
+  const std::string s = encode_hpgl(plan_job(square(), d, builtin_profiles().medium("copy-80")));
   EXPECT_EQ(s.find("FS"), std::string::npos);
 }
 
@@ -101,13 +97,13 @@ TEST(Hpgl, RendersWithHp2xxWithNoIgnoredCommands) {
   const auto dir = test::temp_dir("hpgl");
   for (const char* id : {"generic-hpgl", "roland-gx24", "test-hpgl"}) {
     PlanOptions o;
-    DeviceProfile d = profiles().device(id);
+    DeviceProfile d = builtin_profiles().device(id);
     o.draw_labels = d.tool(ToolKind::Pen) != nullptr;
-    o.font = &font();
+    o.font = &pen_font();
     // hp2xx renders for pen plotters and counts the cutter-only FS (force) as ignored; everything else
     // we send must be understood.
     d.hpgl_force_command.clear();
-    const Job job = plan_job(test::two_piece_sheet(), d, profiles().medium("cardstock-220"), o);
+    const Job job = plan_job(test::two_piece_sheet(), d, builtin_profiles().medium("cardstock-220"), o);
     const auto err = run_hp2xx(encode_hpgl(job), dir);
     if (!err) GTEST_SKIP() << "hp2xx is not installed";
     std::smatch m;
@@ -122,8 +118,8 @@ TEST(Hpgl, RendersWithHp2xxWithNoIgnoredCommands) {
 
 TEST(Hpgl, Hp2xxCountsOnlyTheForceCommandsAsIgnored) {
   const auto dir = test::temp_dir("hpgl-fs");
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("test-hpgl"), profiles().medium("cardstock-220"));
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("test-hpgl"),
+                           builtin_profiles().medium("cardstock-220"));
   const std::string s = encode_hpgl(job);
   const auto err = run_hp2xx(s, dir);
   if (!err) GTEST_SKIP() << "hp2xx is not installed";
@@ -148,8 +144,8 @@ TEST(HpglRoland, SetsForceWithRolandsBangFsAndSpeedWithVs) {
   // [FM]: PA;PA;!ST1;!FS<force>;VS<v>; the GX-24 reads !FS, not HP-GL's FS.
   PlanOptions o;
   o.fold_method = FoldMethod::None;
-  const std::string s = encode_hpgl(
-      plan_job(a4_corner_square(), profiles().device("roland-gx24"), profiles().medium("copy-80"), o));
+  const std::string s = encode_hpgl(plan_job(a4_corner_square(), builtin_profiles().device("roland-gx24"),
+                                             builtin_profiles().medium("copy-80"), o));
   EXPECT_EQ(s.substr(0, s.find("PU")), "IN;PA;SP1;VS10;!FS80;");
   EXPECT_EQ(s.find(";FS"), std::string::npos);
   EXPECT_EQ(s.substr(s.size() - 10), "PU;SP0;IN;");
@@ -161,8 +157,8 @@ TEST(HpglRoland, PutsTheCutOnTheSheetAtTheFrontRightOrigin) {
   PlanOptions o;
   o.fold_method = FoldMethod::None;
   o.order = false;
-  const Job job =
-      plan_job(a4_corner_square(), profiles().device("roland-gx24"), profiles().medium("copy-80"), o);
+  const Job job = plan_job(a4_corner_square(), builtin_profiles().device("roland-gx24"),
+                           builtin_profiles().medium("copy-80"), o);
   ASSERT_EQ(job.passes.size(), 1u);
   for (const DevicePoint& p : job.passes[0].strokes[0].points) {
     EXPECT_GE(p.a, 400);
@@ -173,8 +169,8 @@ TEST(HpglRoland, PutsTheCutOnTheSheetAtTheFrontRightOrigin) {
 }
 
 TEST(Hpgl, SendsOnePointPerPenDown) {
-  const std::string s = encode_hpgl(
-      plan_job(test::two_piece_sheet(), profiles().device("test-hpgl"), profiles().medium("copy-80")));
+  const std::string s = encode_hpgl(plan_job(test::two_piece_sheet(), builtin_profiles().device("test-hpgl"),
+                                             builtin_profiles().medium("copy-80")));
   for (std::size_t at = s.find("PD"); at != std::string::npos; at = s.find("PD", at + 1)) {
     const std::string cmd = s.substr(at, s.find(';', at) - at);
     EXPECT_EQ(std::count(cmd.begin(), cmd.end(), ','), 1) << cmd;

@@ -11,13 +11,9 @@
 namespace foldkit::devices {
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
-const StrokeFont& font() {
-  return foldkit::test::pen_font();
-}
+using foldkit::test::pen_font;
 
 const Pass* find_pass(const Job& job, PassKind kind) {
   for (const Pass& p : job.passes)
@@ -27,7 +23,7 @@ const Pass* find_pass(const Job& job, PassKind kind) {
 
 std::string plan_error(const Sheet& s, const std::string& device, const PlanOptions& o = {}) {
   try {
-    (void)plan_job(s, profiles().device(device), profiles().medium("copy-80"), o);
+    (void)plan_job(s, builtin_profiles().device(device), builtin_profiles().medium("copy-80"), o);
   } catch (const DeviceError& e) {
     return e.what();
   }
@@ -37,9 +33,9 @@ std::string plan_error(const Sheet& s, const std::string& device, const PlanOpti
 TEST(Plan, DrawsLabelsFirstScoresFoldsThenCutsOutlinesLast) {
   PlanOptions o;
   o.draw_labels = true;
-  o.font = &font();
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("copy-80"), o);
+  o.font = &pen_font();
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("copy-80"), o);
   ASSERT_EQ(job.passes.size(), 3u);
   EXPECT_EQ(job.passes[0].kind, PassKind::Draw);
   EXPECT_EQ(job.passes[0].tool, ToolKind::Pen);
@@ -54,7 +50,8 @@ TEST(Plan, DrawsLabelsFirstScoresFoldsThenCutsOutlinesLast) {
 }
 
 TEST(Plan, CutsAHoleBeforeTheOutlineAroundIt) {
-  const Job job = plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("copy-80"));
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("test"),
+                           builtin_profiles().medium("copy-80"));
   const Pass* cut = find_pass(job, PassKind::Cut);
   ASSERT_NE(cut, nullptr);
   std::size_t hole = 99, outline = 99;
@@ -68,8 +65,8 @@ TEST(Plan, CutsAHoleBeforeTheOutlineAroundIt) {
 }
 
 TEST(Plan, UsesTheScoringToolWhenTheDeviceHasOne) {
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("cardstock-220"));
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("cardstock-220"));
   const Pass* score = find_pass(job, PassKind::Score);
   ASSERT_NE(score, nullptr);
   EXPECT_EQ(score->tool, ToolKind::Scorer);
@@ -81,9 +78,9 @@ TEST(Plan, UsesTheScoringToolWhenTheDeviceHasOne) {
 TEST(Plan, FallsBackToAReducedForceBladeWhenThePenTakesTheScorersHolder) {
   PlanOptions o;
   o.draw_labels = true;
-  o.font = &font();
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("cardstock-220"), o);
+  o.font = &pen_font();
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("cardstock-220"), o);
   const Pass* score = find_pass(job, PassKind::Score);
   const Pass* cut = find_pass(job, PassKind::Cut);
   ASSERT_NE(score, nullptr);
@@ -96,7 +93,8 @@ TEST(Plan, FallsBackToAReducedForceBladeWhenThePenTakesTheScorersHolder) {
 
 TEST(Plan, PerforatesFoldsOnThickCardWithoutAScorer) {
   const Sheet sheet = test::two_piece_sheet();
-  const Job job = plan_job(sheet, profiles().device("portrait3"), profiles().medium("cardstock-300"));
+  const Job job =
+      plan_job(sheet, builtin_profiles().device("portrait3"), builtin_profiles().medium("cardstock-300"));
   const Pass* perf = find_pass(job, PassKind::Perforate);
   ASSERT_NE(perf, nullptr);
   // The 30 mm mountain fold in 2.5 mm dashes with 1 mm gaps: 8 dashes, both ends left standing.
@@ -117,8 +115,8 @@ TEST(Plan, PerforatesFoldsOnThickCardWithoutAScorer) {
 TEST(Plan, LeavesFoldsAloneWhenAskedTo) {
   PlanOptions o;
   o.fold_method = FoldMethod::None;
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("copy-80"), o);
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("copy-80"), o);
   EXPECT_EQ(find_pass(job, PassKind::Score), nullptr);
   EXPECT_EQ(find_pass(job, PassKind::Perforate), nullptr);
 }
@@ -128,7 +126,7 @@ TEST(Plan, ConvertsToDeviceUnitsInTheDevicesAxisOrder) {
   s.paths.push_back(test::line_path(PathRole::Cut, {10, 20}, {30, 20}));
   PlanOptions o;
   o.order = false;
-  const Job job = plan_job(s, profiles().device("test"), profiles().medium("copy-80"), o);
+  const Job job = plan_job(s, builtin_profiles().device("test"), builtin_profiles().medium("copy-80"), o);
   ASSERT_EQ(job.passes.size(), 1u);
   ASSERT_EQ(job.passes[0].strokes.size(), 1u);
   const auto& pts = job.passes[0].strokes[0].points;
@@ -142,7 +140,7 @@ TEST(Plan, AddsTheOvercutToClosedCuts) {
   s.paths.push_back(test::rect_path(PathRole::Cut, {10, 10}, {30, 30}));
   PlanOptions o;
   o.overcut_mm = 1.5;
-  const Job job = plan_job(s, profiles().device("test"), profiles().medium("copy-80"), o);
+  const Job job = plan_job(s, builtin_profiles().device("test"), builtin_profiles().medium("copy-80"), o);
   EXPECT_NEAR(stroke_length_mm(job.passes[0].strokes[0], 20), 81.5, 1e-9);
   EXPECT_NEAR(job.stats.cut_length_mm, 81.5, 1e-9);
 }
@@ -182,7 +180,7 @@ TEST(Plan, PlacesPrintAndCutJobsRelativeToTheTopLeftMark) {
   PlanOptions o;
   o.regmarks = true;
   o.order = false;
-  const Job job = plan_job(s, profiles().device("test"), profiles().medium("copy-80"), o);
+  const Job job = plan_job(s, builtin_profiles().device("test"), builtin_profiles().medium("copy-80"), o);
   ASSERT_TRUE(job.regmarks.has_value());
   EXPECT_EQ(job.regmarks->origin_a, 160);  // 8 mm down the feed
   EXPECT_EQ(job.regmarks->origin_b, 100);  // 5 mm across
@@ -212,19 +210,21 @@ TEST(Plan, RefusesRegistrationMarksOnADeviceWithoutASensorOrASheetWithoutMarks) 
 
 TEST(Plan, OrderingNeverIncreasesPenUpTravel) {
   for (const char* id : {"cameo4", "roland-gx24", "generic-hpgl"}) {
-    const Job job = plan_job(test::two_piece_sheet(), profiles().device(id), profiles().medium("copy-80"));
+    const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device(id),
+                             builtin_profiles().medium("copy-80"));
     EXPECT_LE(job.stats.travel_after_mm, job.stats.travel_before_mm + 1e-9) << id;
     EXPECT_GT(job.stats.estimated_s, 0) << id;
   }
   PlanOptions unordered;
   unordered.order = false;
-  const Job job =
-      plan_job(test::two_piece_sheet(), profiles().device("cameo4"), profiles().medium("copy-80"), unordered);
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("cameo4"),
+                           builtin_profiles().medium("copy-80"), unordered);
   EXPECT_DOUBLE_EQ(job.stats.travel_after_mm, job.stats.travel_before_mm);
 }
 
 TEST(Plan, CountsEveryStrokeAndItsLengthInTheStatistics) {
-  const Job job = plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("copy-80"));
+  const Job job = plan_job(test::two_piece_sheet(), builtin_profiles().device("test"),
+                           builtin_profiles().medium("copy-80"));
   std::size_t strokes = 0;
   double length = 0;
   for (const Pass& p : job.passes) {
@@ -245,8 +245,9 @@ TEST(Plan, ThePenDrawsPartLettersBesideTheSeamNumbers) {
   sheet.texts.push_back({"B", at, 6, 0, PathRole::Piece, 0});
   PlanOptions o;
   o.draw_labels = true;
-  o.font = &font();
-  const Job job = plan_job(sheet, profiles().device("cameo4"), profiles().medium("copy-80"), o);
+  o.font = &pen_font();
+  const Job job =
+      plan_job(sheet, builtin_profiles().device("cameo4"), builtin_profiles().medium("copy-80"), o);
   const Pass* draw = find_pass(job, PassKind::Draw);
   ASSERT_NE(draw, nullptr);
   int letter_strokes = 0;

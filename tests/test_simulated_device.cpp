@@ -20,13 +20,9 @@
 namespace foldkit::devices {
 namespace {
 
-const ProfileSet& profiles() {
-  return foldkit::test::builtin_profiles();
-}
+using foldkit::test::builtin_profiles;
 
-const StrokeFont& font() {
-  return foldkit::test::pen_font();
-}
+using foldkit::test::pen_font;
 
 std::string encode(const Job& job) {
   return job.protocol == Protocol::Gpgl ? encode_gpgl(job) : encode_hpgl(job);
@@ -50,12 +46,13 @@ std::string error_of(const std::function<void()>& f) {
 class EveryDevice : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryDevice, GivesBackTheJobsStrokesWithinOneUnitInsideTheCuttingArea) {
-  const DeviceProfile& device = profiles().device(GetParam());
+  const DeviceProfile& device = builtin_profiles().device(GetParam());
   PlanOptions options;
   options.draw_labels = device.tool(ToolKind::Pen) != nullptr;
-  options.font = &font();
+  options.font = &pen_font();
   options.overcut_mm = 1;
-  const Job job = plan_job(test::two_piece_sheet(), device, profiles().medium("cardstock-220"), options);
+  const Job job =
+      plan_job(test::two_piece_sheet(), device, builtin_profiles().medium("cardstock-220"), options);
   SimulatedDevice dev(device);
   send_all(dev, encode(job));
   dev.close();
@@ -88,11 +85,11 @@ INSTANTIATE_TEST_SUITE_P(Profiles, EveryDevice,
                                            "roland-gx24", "generic-hpgl", "test", "test-hpgl"));
 
 TEST(SimulatedDevice, CoversEveryBuiltInProfileInTheRoundTripTable) {
-  EXPECT_EQ(profiles().devices.size(), 10u) << "add new profiles to the EveryDevice table";
+  EXPECT_EQ(builtin_profiles().devices.size(), 10u) << "add new profiles to the EveryDevice table";
 }
 
 TEST(SimulatedDevice, AnswersTheCameo3HandshakeLikeTheRecording) {
-  SimulatedDevice dev(profiles().device("cameo3"));
+  SimulatedDevice dev(builtin_profiles().device("cameo3"));
   const std::string esc05 = "\x1b\x05", fg = "FG\x03";
   auto reply = [&](const std::string& c) {
     auto r = dev.request(stream_bytes(c), std::chrono::milliseconds(100));
@@ -105,12 +102,12 @@ TEST(SimulatedDevice, AnswersTheCameo3HandshakeLikeTheRecording) {
 }
 
 TEST(SimulatedDevice, FindsTheMarksAndCutsRelativeToThem) {
-  const DeviceProfile& device = profiles().device("cameo4");
+  const DeviceProfile& device = builtin_profiles().device("cameo4");
   Sheet marked = test::two_piece_sheet({25, 30});
   test::add_regmarks(marked, {10, 12}, {150, 90});
   PlanOptions o;
   o.regmarks = true;
-  const Job job = plan_job(marked, device, profiles().medium("copy-80"), o);
+  const Job job = plan_job(marked, device, builtin_profiles().medium("copy-80"), o);
   SimulatedDevice dev(device);
   send_all(dev, encode_gpgl(job));
   dev.close();
@@ -129,7 +126,7 @@ TEST(SimulatedDevice, FindsTheMarksAndCutsRelativeToThem) {
 }
 
 TEST(SimulatedDevice, FollowsHpglRelativeMoves) {
-  SimulatedDevice dev(profiles().device("test-hpgl"));
+  SimulatedDevice dev(builtin_profiles().device("test-hpgl"));
   dev.write(stream_bytes("IN;SP1;VS5;FS5;PU400,400;PR;PD100,0,0,100;PA;PU0,0;SP0;IN;"));
   dev.close();
   ASSERT_EQ(dev.strokes().size(), 1u);
@@ -138,13 +135,13 @@ TEST(SimulatedDevice, FollowsHpglRelativeMoves) {
 }
 
 TEST(SimulatedDevice, RejectsAnUnknownCommandWithItsByteOffset) {
-  SimulatedDevice dev(profiles().device("test"));
+  SimulatedDevice dev(builtin_profiles().device("test"));
   const std::string msg = error_of([&] { dev.write(stream_bytes("\x1b\x04TG1\x03QQ5\x03")); });
   EXPECT_NE(msg.find("byte 6"), std::string::npos) << msg;
 }
 
 TEST(SimulatedDevice, RejectsADrawOutsideTheCutWindowWithItsOffset) {
-  SimulatedDevice dev(profiles().device("test"));
+  SimulatedDevice dev(builtin_profiles().device("test"));
   const std::string setup =
       "\x1b\x04J1\x03!5,1\x03"
       "FX10,1\x03M0,0\x03";
@@ -157,7 +154,7 @@ TEST(SimulatedDevice, RejectsADrawOutsideTheCutWindowWithItsOffset) {
 
 TEST(SimulatedDevice, RejectsOutOfRangeSettingsAndDrawsBeforeToolSetUp) {
   auto first_error = [](const std::string& stream) {
-    SimulatedDevice dev(profiles().device("test"));
+    SimulatedDevice dev(builtin_profiles().device("test"));
     return error_of([&] { dev.write(stream_bytes(stream)); });
   };
   EXPECT_NE(first_error("\x1b\x04!11,1\x03").find("speed 11 out of range 1..10"), std::string::npos);
@@ -178,28 +175,28 @@ TEST(SimulatedDevice, RejectsOutOfRangeSettingsAndDrawsBeforeToolSetUp) {
 }
 
 TEST(SimulatedDevice, RejectsAStreamThatEndsInsideACommandOrWithTheToolDown) {
-  SimulatedDevice cut_short(profiles().device("test"));
+  SimulatedDevice cut_short(builtin_profiles().device("test"));
   cut_short.write(stream_bytes("\x1b\x04J1\x03M0,0"));
   EXPECT_NE(error_of([&] { cut_short.close(); }).find("ends inside a command"), std::string::npos);
-  SimulatedDevice left_down(profiles().device("test"));
+  SimulatedDevice left_down(builtin_profiles().device("test"));
   left_down.write(
       stream_bytes("\x1b\x04J1\x03!5,1\x03"
                    "FX5,1\x03M0,0\x03"
                    "D10,10\x03"));
   EXPECT_NE(error_of([&] { left_down.close(); }).find("tool down"), std::string::npos);
-  SimulatedDevice hpgl(profiles().device("test-hpgl"));
+  SimulatedDevice hpgl(builtin_profiles().device("test-hpgl"));
   hpgl.write(stream_bytes("IN;SP1;PU0,0;PD10,10;"));
   EXPECT_NE(error_of([&] { hpgl.close(); }).find("pen down"), std::string::npos);
 }
 
 TEST(SimulatedDevice, ParsesHpglStrictly) {
-  SimulatedDevice dev(profiles().device("test-hpgl"));
+  SimulatedDevice dev(builtin_profiles().device("test-hpgl"));
   EXPECT_NE(error_of([&] { dev.write(stream_bytes("IN;PA;XX1;")); }).find("HP-GL byte 6: unknown command"),
             std::string::npos);
-  SimulatedDevice odd(profiles().device("test-hpgl"));
+  SimulatedDevice odd(builtin_profiles().device("test-hpgl"));
   EXPECT_NE(error_of([&] { odd.write(stream_bytes("IN;SP1;PD1,2,3;")); }).find("x,y pairs"),
             std::string::npos);
-  SimulatedDevice range(profiles().device("test-hpgl"));
+  SimulatedDevice range(builtin_profiles().device("test-hpgl"));
   EXPECT_NE(error_of([&] { range.write(stream_bytes("IN;SP1;VS99;")); }).find("velocity 99 out of range"),
             std::string::npos);
 }
@@ -221,12 +218,12 @@ SimFaults faults(const std::function<void(SimFaults&)>& set) {
 class InjectedFault : public ::testing::TestWithParam<Fault> {};
 
 TEST_P(InjectedFault, EndsWithAClearMessageWithinABoundedTime) {
-  const DeviceProfile& device = profiles().device("cameo4");
+  const DeviceProfile& device = builtin_profiles().device("cameo4");
   Sheet marked = test::two_piece_sheet({15, 15});
   test::add_regmarks(marked, {2, 2}, {110, 60});
   PlanOptions po;
   po.regmarks = true;
-  const std::string stream = encode_gpgl(plan_job(marked, device, profiles().medium("copy-80"), po));
+  const std::string stream = encode_gpgl(plan_job(marked, device, builtin_profiles().medium("copy-80"), po));
   SimOptions so;
   so.faults = GetParam().faults;
   SimulatedDevice dev(device, so);
@@ -254,8 +251,8 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return info.param.name; });
 
 TEST(SendJob, SendsAWholeJobInSlicesWithProgress) {
-  const DeviceProfile& device = profiles().device("cameo4");
-  const Job job = plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"));
+  const DeviceProfile& device = builtin_profiles().device("cameo4");
+  const Job job = plan_job(test::two_piece_sheet(), device, builtin_profiles().medium("copy-80"));
   const std::string stream = encode_gpgl(job);
   SimulatedDevice dev(device);
   std::vector<SendProgress> seen;
@@ -278,8 +275,8 @@ TEST(SendJob, SendsAWholeJobInSlicesWithProgress) {
 }
 
 TEST(SendJob, StopsCleanlyOnCancelWithTheToolUpAndTheJobEnded) {
-  const DeviceProfile& device = profiles().device("test");
-  const Job job = plan_job(test::two_piece_sheet(), device, profiles().medium("copy-80"));
+  const DeviceProfile& device = builtin_profiles().device("test");
+  const Job job = plan_job(test::two_piece_sheet(), device, builtin_profiles().medium("copy-80"));
   SimulatedDevice dev(device);
   std::atomic<bool> cancel{false};
   SendOptions o;
@@ -300,14 +297,14 @@ TEST(SendJob, StopsCleanlyOnCancelWithTheToolUpAndTheJobEnded) {
 void cut_and_draw_two_pieces(SimulatedDevice& dev) {
   PlanOptions o;
   o.draw_labels = true;
-  o.font = &font();
-  dev.write(stream_bytes(encode_gpgl(
-      plan_job(test::two_piece_sheet(), profiles().device("test"), profiles().medium("copy-80"), o))));
+  o.font = &pen_font();
+  dev.write(stream_bytes(encode_gpgl(plan_job(test::two_piece_sheet(), builtin_profiles().device("test"),
+                                              builtin_profiles().medium("copy-80"), o))));
   dev.close();
 }
 
 TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
-  SimulatedDevice dev(profiles().device("test"));
+  SimulatedDevice dev(builtin_profiles().device("test"));
   cut_and_draw_two_pieces(dev);
   const auto dir = test::temp_dir("sim-render");
   dev.render(dir / "cut.png");
@@ -323,7 +320,7 @@ TEST(SimulatedDevice, RendersWhatItCutScoredAndDrewToPngAndSvg) {
 }
 
 TEST(SimulatedDevice, TheSceneDrawsEveryStrokeInItsToolsColourInsideItsBox) {
-  SimulatedDevice dev(profiles().device("test"));
+  SimulatedDevice dev(builtin_profiles().device("test"));
   cut_and_draw_two_pieces(dev);
   const SimScene scene = dev.scene();
   ASSERT_EQ(scene.lines.size(), dev.strokes().size());
