@@ -47,8 +47,8 @@ TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
     int placed = 0;
     for (std::size_t s = 0; s < seams.size(); ++s) {
       const auto& tab = plan.tab_of_seam[s];
-      const bool dropped =
-          std::find(plan.dropped.begin(), plan.dropped.end(), SeamId(static_cast<int>(s))) != plan.dropped.end();
+      const bool dropped = std::find(plan.dropped.begin(), plan.dropped.end(), SeamId(static_cast<int>(s))) !=
+                           plan.dropped.end();
       ASSERT_NE(tab.has_value(), dropped);
       if (!tab) continue;
       ++placed;
