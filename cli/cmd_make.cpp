@@ -252,7 +252,10 @@ nlohmann::json make_json(const MakeArgs& args, const PipelineRun& run,
     outputs.push_back(f.string());
   nlohmann::json assembly = nlohmann::json::array();
   for (const layout::AssemblyStep& step : r.assembly)
-    assembly.push_back({{"step", step.step}, {"seam", step.number}, {"fold_angle_rad", step.fold_angle_rad}});
+    assembly.push_back({{"step", step.step},
+                        {"seam", step.number},
+                        {"seam_name", step.name},
+                        {"fold_angle_rad", step.fold_angle_rad}});
   nlohmann::json j{{"file", args.mesh},
                    {"face_count", u.num_faces()},
                    {"piece_count", u.piece_count},

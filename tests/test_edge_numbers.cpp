@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "foldkit/layout/edge_numbers.hpp"
 #include "foldkit/layout/label_text.hpp"
+#include "foldkit/layout/layout.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -107,4 +109,47 @@ TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClear
   EXPECT_DOUBLE_EQ(l.height_mm, 2);
   for (Vec2 corner : l.box_mm)
     EXPECT_TRUE(inside_convex(piece.triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}
+
+namespace {
+LayoutOptions spot_at_150() {
+  LayoutOptions o;
+  o.size_mm = 150;
+  return o;
+}
+}  // namespace
+
+TEST(EdgeNumbers, NumbersRestartInEachPartAndEachPairOfPartsInOutlineOrder) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const unfold::PartsResult split = test::split_to_fit(ex.mesh, ex.unfolding, spot_at_150());
+  ASSERT_GT(split.unfolding.piece_count, 2);
+  const auto pieces = scaled_pieces(split.unfolding, 150 / split.unfolding.model_extent);
+  const auto seams = find_seams(split.unfolding, pieces);
+  const auto outline = number_seams(pieces, seams);
+  const auto printed = number_seams_by_part(seams, outline);
+  // Per pair of parts (a part with itself for the seams inside it): 1..k, rising along the outlines.
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> of_pair;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
+    const int a = seams[s].sides[0].piece, b = seams[s].sides[1].piece;
+    of_pair[{std::min(a, b), std::max(a, b)}].push_back({outline[s], printed[s]});
+  }
+  ASSERT_GT(of_pair.size(), 2u);
+  int largest = 0;
+  for (auto& [pair, numbers] : of_pair) {
+    std::sort(numbers.begin(), numbers.end());
+    for (std::size_t i = 0; i < numbers.size(); ++i)
+      EXPECT_EQ(numbers[i].second, static_cast<int>(i) + 1) << "parts " << pair.first << "-" << pair.second;
+    largest = std::max(largest, static_cast<int>(numbers.size()));
+  }
+  EXPECT_EQ(*std::max_element(printed.begin(), printed.end()), largest);
+  EXPECT_LT(largest, static_cast<int>(seams.size()) / 2) << "numbers stay shorter than one count over all";
+}
+
+TEST(EdgeNumbers, ASinglePartKeepsOneCountInOutlineOrder) {
+  const auto& ex = test::unfolded_example("fish_350.obj");
+  ASSERT_EQ(ex.unfolding.piece_count, 1);
+  const auto pieces = scaled_pieces(ex.unfolding, 1);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const auto outline = number_seams(pieces, seams);
+  EXPECT_EQ(number_seams_by_part(seams, outline), outline);
 }

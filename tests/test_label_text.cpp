@@ -53,6 +53,14 @@ TEST(LabelText, ASeamLabelNamesItsMatesPartAndSheetOnlyWhenThoseDiffer) {
   EXPECT_EQ(seam_label_text(12, "", 3), "12");  // inside one part the mate is on the same sheet
 }
 
+TEST(LabelText, AListedSeamIsNamedByItsPartsAndNumber) {
+  EXPECT_EQ(seam_name(7, "", ""), "7");
+  EXPECT_EQ(seam_name(7, "A", "A"), "A 7");
+  EXPECT_EQ(seam_name(3, "B", "A"), "A-B 3");
+  EXPECT_EQ(seam_name(3, "A", "B"), "A-B 3");
+  EXPECT_EQ(seam_name(9, "Z", "AA"), "Z-AA 9.");  // by rank, not by spelling
+}
+
 TEST(LabelText, TheSeamNumberIsReadBackFromAnyLabelForm) {
   EXPECT_EQ(seam_number_in("12"), 12);
   EXPECT_EQ(seam_number_in("9."), 9);

@@ -7,6 +7,7 @@
 #include <set>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -24,6 +25,28 @@ using namespace foldkit;
 using namespace foldkit::layout;
 
 namespace {
+
+// What names a seam now that numbers are counted per part and per pair of parts: its two parts and
+// its number.
+using SeamKey = std::array<int, 3>;
+SeamKey seam_key(int piece, int mate, int number) {
+  return {std::min(piece, mate), std::max(piece, mate), number};
+}
+// The seam a printed label names: its own part, the part its letter names (its own when it has none)
+// and its number.
+SeamKey seam_key_of(const LayoutResult& r, const Text& t) {
+  const std::size_t digits = t.text.find_first_of("0123456789");
+  const std::string letter = t.text.substr(0, digits);
+  int mate = t.piece;
+  for (std::size_t p = 0; p < r.piece_letters.size() && !letter.empty(); ++p)
+    if (r.piece_letters[p] == letter) mate = static_cast<int>(p);
+  return seam_key(t.piece, mate, seam_number_in(t.text));
+}
+// The seam of a glued edge, by the same key.
+SeamKey seam_key_of(const LayoutResult& r, const unfold::Unfolding& u, std::size_t e) {
+  const auto& edge = u.edges[e];
+  return seam_key(u.piece_of_face[edge.face[0]], u.piece_of_face[edge.face[1]], r.seam_number[e]);
+}
 
 // Whether a sheet's part list ("parts A-C, F") names `letter`.
 bool lists_part(const std::string& line, const std::string& letter) {
@@ -126,19 +149,19 @@ TEST(Layout, EverySeamCarriesItsNumberOnBothSidesAndNumbersAreUnique) {
   for (const char* name : kExamples) {
     const auto& ex = test::unfolded_example(name);
     const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
-    std::map<int, int> count;
+    std::map<SeamKey, int> count;
     for (const Sheet& sheet : r.sheets)
       for (const Text& t : sheet.texts)
-        if (t.role == PathRole::Label) count[seam_number_in(t.text)] += 1;
+        if (t.role == PathRole::Label) count[seam_key_of(r, t)] += 1;
     const int seams = ex.unfolding.seam_count();
     ASSERT_EQ(static_cast<int>(count.size()), seams) << name;
-    for (int n = 1; n <= seams; ++n)
-      EXPECT_EQ(count[n], 2) << name << ": number " << n;
-    // The per-edge record agrees: each glued seam has its own number.
-    std::vector<int> seen;
+    // The per-edge record agrees: each glued seam has its own name, printed on both of its sides.
+    std::vector<SeamKey> seen;
     for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e) {
       EXPECT_EQ(r.seam_number[e] > 0, ex.unfolding.edges[e].glued_seam()) << name << " edge " << e;
-      if (r.seam_number[e] > 0) seen.push_back(r.seam_number[e]);
+      if (r.seam_number[e] == 0) continue;
+      seen.push_back(seam_key_of(r, ex.unfolding, e));
+      EXPECT_EQ(count[seen.back()], 2) << name << ": number " << r.seam_number[e];
     }
     std::sort(seen.begin(), seen.end());
     EXPECT_EQ(std::adjacent_find(seen.begin(), seen.end()), seen.end()) << name << ": a number is used twice";
@@ -149,15 +172,16 @@ TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
   const auto& ex = test::unfolded_example("spot_350.obj");
   const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
   // Where each numbered edge's two copies are on the sheets.
-  std::map<int, std::vector<std::pair<int, std::array<Vec2, 2>>>> copies;
+  std::map<SeamKey, std::vector<std::pair<int, std::array<Vec2, 2>>>> copies;
   for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e) {
     const auto& edge = ex.unfolding.edges[e];
     if (r.seam_number[e] == 0) continue;
     for (int k = 0; k < 2; ++k) {
       const int f = edge.face[k], c = edge.corner[k], piece = ex.unfolding.piece_of_face[f];
-      copies[r.seam_number[e]].push_back({r.placements[piece].sheet,
-                                          {r.to_sheet(piece, ex.unfolding.flat[f][c]),
-                                           r.to_sheet(piece, ex.unfolding.flat[f][(c + 1) % 3])}});
+      copies[seam_key_of(r, ex.unfolding, e)].push_back(
+          {r.placements[piece].sheet,
+           {r.to_sheet(piece, ex.unfolding.flat[f][c]),
+            r.to_sheet(piece, ex.unfolding.flat[f][(c + 1) % 3])}});
     }
   }
   for (std::size_t s = 0; s < r.sheets.size(); ++s)
@@ -169,7 +193,7 @@ TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
       const Vec2 along{std::cos(t.angle_rad), std::sin(t.angle_rad)}, up{along.y, -along.x};
       const Vec2 centre = t.at_mm + along * (0.5 * label_width_mm(t.text, t.height_mm, LabelOptions{})) +
                           up * (0.5 * (t.height_mm - label_descent_mm(t.text, t.height_mm)));
-      for (const auto& [sheet, ends] : copies[seam_number_in(t.text)]) {
+      for (const auto& [sheet, ends] : copies[seam_key_of(r, t)]) {
         if (sheet != static_cast<int>(s)) continue;
         // Distance from the label's middle to the edge segment.
         const Vec2 d = ends[1] - ends[0];
@@ -325,14 +349,20 @@ TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
   o.hints = true;
   const LayoutResult r = layout_sheets(ex.unfolding, o);
   ASSERT_EQ(static_cast<int>(r.assembly.size()), ex.unfolding.seam_count());
-  std::vector<int> numbers;
+  // Every seam once: each step names its edge, whose printed number it carries, under a name of its own.
+  std::set<int> edges;
+  std::set<std::string> names;
   for (std::size_t i = 0; i < r.assembly.size(); ++i) {
-    EXPECT_EQ(r.assembly[i].step, static_cast<int>(i) + 1);
-    numbers.push_back(r.assembly[i].number);
+    const AssemblyStep& step = r.assembly[i];
+    EXPECT_EQ(step.step, static_cast<int>(i) + 1);
+    ASSERT_TRUE(step.edge >= 0 && step.edge < static_cast<int>(r.seam_number.size()));
+    EXPECT_EQ(step.number, r.seam_number[step.edge]);
+    EXPECT_NE(step.name.find(number_text(step.number)), std::string::npos) << step.name;
+    edges.insert(step.edge);
+    names.insert(step.name);
   }
-  std::sort(numbers.begin(), numbers.end());
-  for (std::size_t i = 0; i < numbers.size(); ++i)
-    EXPECT_EQ(numbers[i], static_cast<int>(i) + 1);
+  EXPECT_EQ(static_cast<int>(edges.size()), ex.unfolding.seam_count());
+  EXPECT_EQ(static_cast<int>(names.size()), ex.unfolding.seam_count());
   int list_lines = 0, step_marks = 0;
   std::set<std::string> steps_shown;
   for (const Sheet& sheet : r.sheets)
@@ -350,8 +380,12 @@ TEST(Layout, HintsGiveEverySeamOneStepAndAListOnTheSheets) {
   // side at least (all keep it in the list).
   EXPECT_LE(step_marks, 2 * ex.unfolding.seam_count());
   int missing = 0;
-  for (int step = 1; step <= ex.unfolding.seam_count(); ++step)
-    missing += steps_shown.count("(" + number_text(step) + ")") == 0;
+  for (int step = 1; step <= ex.unfolding.seam_count(); ++step) {
+    std::string mark = "(";  // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) on that here
+    mark += number_text(step);
+    mark += ')';
+    missing += steps_shown.count(mark) == 0;
+  }
   // Every label gets a clear spot before any gets its step mark, and a step mark crosses a fold line
   // rather than go, but never touches the outline or a label: not much more than one in four goes (50 of
   // 196 here, the brackets' descenders taking their room too).
@@ -415,12 +449,12 @@ TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
   EXPECT_EQ(static_cast<int>(letter_on_sheet.size()), split.unfolding.piece_count);
   EXPECT_EQ(letters.size(), letter_on_sheet.size());
   // Mates: the pieces on each side of every seam.
-  std::map<int, std::array<int, 2>> sides;
+  std::map<SeamKey, std::array<int, 2>> sides;
   for (std::size_t e = 0; e < split.unfolding.edges.size(); ++e)
     if (r.seam_number[e] > 0) {
       const auto& edge = split.unfolding.edges[e];
-      sides[r.seam_number[e]] = {split.unfolding.piece_of_face[edge.face[0]],
-                                 split.unfolding.piece_of_face[edge.face[1]]};
+      sides[seam_key_of(r, split.unfolding, e)] = {split.unfolding.piece_of_face[edge.face[0]],
+                                                   split.unfolding.piece_of_face[edge.face[1]]};
     }
   // Each sheet lists its parts ("parts A-C, F"): where a label has no room for the mate's sheet, the
   // list on the mate's sheet names the mate.
@@ -432,7 +466,7 @@ TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
   for (const Sheet& sheet : r.sheets)
     for (const Text& t : sheet.texts) {
       if (t.role != PathRole::Label) continue;
-      const auto [a, b] = sides.at(seam_number_in(t.text));
+      const auto [a, b] = sides.at(seam_key_of(r, t));
       if (a == b) {
         EXPECT_EQ(t.text, number_text(seam_number_in(t.text)));
         continue;

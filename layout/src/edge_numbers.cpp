@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -104,6 +105,20 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
   // Seams missing from every outline cannot happen for a valid unfolding; number them anyway.
   for (int& n : number)
     if (n == 0) n = next++;
+  return number;
+}
+
+std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers) {
+  std::vector<std::size_t> in_outline_order(seams.size());
+  std::iota(in_outline_order.begin(), in_outline_order.end(), 0);
+  std::stable_sort(in_outline_order.begin(), in_outline_order.end(),
+                   [&](std::size_t a, std::size_t b) { return outline_numbers[a] < outline_numbers[b]; });
+  std::map<std::pair<int, int>, int> last_of_pair;
+  std::vector<int> number(seams.size(), 0);
+  for (std::size_t s : in_outline_order) {
+    const int a = seams[s].sides[0].piece, b = seams[s].sides[1].piece;
+    number[s] = ++last_of_pair[{std::min(a, b), std::max(a, b)}];
+  }
   return number;
 }
 

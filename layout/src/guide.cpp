@@ -167,16 +167,15 @@ void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
 std::vector<std::string> order_by_part(const unfold::Unfolding& u, const LayoutResult& r,
                                        const std::vector<std::string>& letter_of_tint,
                                        const std::vector<int>& tint_of_piece) {
-  std::vector<int> step_of_number(r.assembly.size() + 2, 0);
+  // Numbers repeat from part to part: a step is found by its seam's edge.
+  std::vector<int> step_of_edge(u.edges.size(), 0);
   for (const AssemblyStep& s : r.assembly)
-    if (s.number >= 0 && s.number < static_cast<int>(step_of_number.size()))
-      step_of_number[s.number] = s.step;
+    if (s.edge >= 0 && s.edge < static_cast<int>(step_of_edge.size())) step_of_edge[s.edge] = s.step;
   const int parts = static_cast<int>(letter_of_tint.size());
   std::vector<int> first(parts, 1 << 30), last(parts, 0);
-  for (std::size_t e = 0; e < u.edges.size() && e < r.seam_number.size(); ++e) {
-    const int number = r.seam_number[e];
-    if (number <= 0 || number >= static_cast<int>(step_of_number.size())) continue;
-    const int step = step_of_number[number];
+  for (std::size_t e = 0; e < u.edges.size(); ++e) {
+    const int step = step_of_edge[e];
+    if (step <= 0) continue;
     for (int k = 0; k < 2; ++k) {
       const int f = u.edges[e].face[k];
       if (f < 0) continue;

@@ -70,6 +70,15 @@ std::string seam_label_text(int number, const std::string& mate_letter, int mate
   return text;
 }
 
+std::string seam_name(int number, const std::string& letter, const std::string& mate_letter) {
+  if (letter.empty() && mate_letter.empty()) return number_text(number);
+  if (letter == mate_letter || mate_letter.empty()) return letter + " " + number_text(number);
+  if (letter.empty()) return mate_letter + " " + number_text(number);
+  const bool in_order = letter_rank(letter) <= letter_rank(mate_letter);
+  return (in_order ? letter : mate_letter) + "-" + (in_order ? mate_letter : letter) + " " +
+         number_text(number);
+}
+
 int seam_number_in(const std::string& text) {
   // The number is the first run of digits: the mate's letter comes before it, the sheet after it.
   const std::size_t i = text.find_first_of("0123456789");

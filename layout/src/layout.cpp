@@ -78,8 +78,9 @@ Box2 packing_area(const LayoutOptions& o) {
 struct Draft {
   std::vector<ScaledPiece> pieces;
   std::vector<Seam> seams;
-  std::vector<int> numbers;
-  std::vector<int> order;  // assembly order (seam indices), empty without hints
+  std::vector<int> numbers;  // per seam, its rank in outline order (tabs alternate along it)
+  std::vector<int> printed;  // per seam, the number its labels print (number_seams_by_part)
+  std::vector<int> order;    // assembly order (seam indices), empty without hints
   std::vector<std::vector<FoldLine>> folds;
   TabPlan tabs;
   std::vector<Label> labels;
@@ -105,14 +106,25 @@ SeamTexts seam_texts(const Draft& d, std::span<const int> sheet_of_piece = {}) {
       const bool other = mate >= 0 && own >= 0 && mate != own;
       const bool elsewhere = other && !sheet_of_piece.empty() && sheet_of_piece[mate] != sheet_of_piece[own];
       const std::string& letter = other ? d.letters[mate] : std::string();
-      texts.full[s][k] = seam_label_text(d.numbers[s], letter, elsewhere ? sheet_of_piece[mate] + 1 : 0);
-      texts.brief[s][k] = seam_label_text(d.numbers[s], letter, 0);
+      texts.full[s][k] = seam_label_text(d.printed[s], letter, elsewhere ? sheet_of_piece[mate] + 1 : 0);
+      texts.brief[s][k] = seam_label_text(d.printed[s], letter, 0);
     }
   return texts;
 }
 
+// A seam as a list names it: by its parts' letters and number ("A-B 3"), or by its number alone when the
+// model is one part.
+std::string listed_seam_name(const Draft& d, int s) {
+  if (d.pieces.size() <= 1) return number_text(d.printed[s]);
+  const auto letter = [&](int k) {
+    const int piece = d.seams[s].sides[k].piece;
+    return piece >= 0 && piece < static_cast<int>(d.letters.size()) ? d.letters[piece] : std::string();
+  };
+  return seam_name(d.printed[s], letter(0), letter(1));
+}
+
 std::vector<Label> place_draft_labels(const Draft& d, const SeamTexts& texts) {
-  return place_labels(d.pieces, d.seams, d.numbers, d.tabs, d.label_avoid, d.hints, d.label_options, texts,
+  return place_labels(d.pieces, d.seams, d.printed, d.tabs, d.label_avoid, d.hints, d.label_options, texts,
                       d.label_taken);
 }
 
@@ -124,6 +136,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   report(o, "drawing", 1, kSteps);
   d.seams = find_seams(u, d.pieces);
   d.numbers = number_seams(d.pieces, d.seams);
+  d.printed = number_seams_by_part(d.seams, d.numbers);
   if (o.hints) d.order = assembly_order(seam_loops(d.pieces, d.seams), d.seams);
   report(o, "drawing", 2, kSteps);
   for (const ScaledPiece& p : d.pieces)
@@ -287,7 +300,7 @@ std::vector<ListBlock> assembly_blocks(const Draft& d, Vec2 area_size) {
   constexpr double kColumn_mm = 16;
   std::vector<std::string> entries;
   for (std::size_t step = 0; step < d.order.size(); ++step)
-    entries.push_back(std::to_string(step + 1) + ". " + std::to_string(d.numbers[d.order[step]]));
+    entries.push_back(std::to_string(step + 1) + ". " + listed_seam_name(d, d.order[step]));
   std::vector<ListBlock> blocks;
   const int columns = std::max(1, static_cast<int>((area_size.x - 4) / kColumn_mm));
   const int rows_max = std::max(4, static_cast<int>((area_size.y - 4) / kListLine_mm) - 2);
@@ -677,7 +690,7 @@ void note_dropped_tabs(const Draft& d, const LayoutOptions& o, LayoutResult& r) 
       std::to_string(d.tabs.dropped.size()) + " seam(s) without a glue tab (no room on either side" +
       (slits > 0 ? "; " + std::to_string(slits) + " of them narrow slits to close edge to edge" : "") + ")");
   for (SeamId s : d.tabs.dropped)
-    r.dropped_tab_seams.push_back(d.numbers[s.index()]);
+    r.dropped_tab_seams.push_back(listed_seam_name(d, static_cast<int>(s.index())));
 }
 
 // The sheets of a complete packing: pieces, assembly list, furniture, then the figures and notes.
@@ -718,10 +731,11 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
     r.label_audit += audit_labels(sheet);
   r.seam_number.assign(u.edges.size(), 0);
   for (std::size_t s = 0; s < d.seams.size(); ++s)
-    r.seam_number[d.seams[s].edge] = d.numbers[s];
+    r.seam_number[d.seams[s].edge] = d.printed[s];
   for (std::size_t step = 0; step < d.order.size(); ++step) {
     const int s = d.order[step];
-    r.assembly.push_back({static_cast<int>(step) + 1, d.numbers[s], d.seams[s].fold_angle_rad});
+    r.assembly.push_back({static_cast<int>(step) + 1, d.printed[s], d.seams[s].fold_angle_rad,
+                          d.seams[s].edge, listed_seam_name(d, s)});
   }
 }
 

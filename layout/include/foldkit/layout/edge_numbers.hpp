@@ -52,8 +52,17 @@ struct Label {
 };
 
 /// Numbers seams 1..N in outline order: piece by piece along each outline, so that the numbers of
-/// neighbouring edges are close. Returns number per seam.
+/// neighbouring edges are close. Returns number per seam. This order is the seams' identity within a
+/// layout (tabs alternate along it); what is printed is number_seams_by_part.
 std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<const Seam> seams);
+
+/// The numbers printed: the seams inside one part numbered 1, 2, … among themselves, and the seams
+/// between two parts numbered 1, 2, … among the seams of that pair, each in the order of
+/// `outline_numbers` (number_seams). A label is named by its number together with the mate's letter,
+/// so numbers need only be unique per pair of parts; they stay one or two digits where one count over
+/// the whole model needs three, and a short label is what fits beside a small face. With one part this
+/// is number_seams.
+std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers);
 
 /// What each side of each seam may print, per seam and side: `full` where it fits clear of every line
 /// and label (e.g. "B12 p3"), `brief` where only a shorter form does (e.g. "B12", when the sheets say

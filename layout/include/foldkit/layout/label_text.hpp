@@ -25,6 +25,11 @@ int letter_rank(const std::string& letter);
 /// `mate_sheet` (1-based) is 0 when it is on this sheet.
 std::string seam_label_text(int number, const std::string& mate_letter, int mate_sheet);
 
+/// A seam's name where it is listed apart from its edges (glue order, JSON): its number after its parts'
+/// letters, "A 7" inside part A, "A-B 3" between parts A and B (letters in alphabetical order); the bare
+/// number when both letters are empty (a model in one part).
+std::string seam_name(int number, const std::string& letter, const std::string& mate_letter);
+
 /// The seam number a label printed by seam_label_text names (0 when it names none): "B12. p3" -> 12.
 int seam_number_in(const std::string& label_text);
 

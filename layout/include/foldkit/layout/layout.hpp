@@ -82,6 +82,8 @@ struct AssemblyStep {
   int step = 0;
   int number = 0;
   double fold_angle_rad = 0;  ///< dihedral of the seam: sharp seams come first
+  int edge = -1;              ///< the seam's mesh edge
+  std::string name;           ///< as listed: "A-B 3", "A 7", or "7" for a model in one part (seam_name)
 };
 
 /// Where a piece went: the flat net's point p (model units) lands on sheet `sheet` at
@@ -101,7 +103,9 @@ struct LayoutResult {
   SheetStats overall;
   std::vector<AssemblyStep> assembly;  ///< filled when hints are on
   std::vector<std::string> notes;      ///< e.g. which tabs were dropped and why
-  /// Per mesh edge, the number printed on both sides of a glued seam (0 for other edges).
+  /// Per mesh edge, the number printed on both sides of a glued seam (0 for other edges). Numbers are
+  /// counted per part and per pair of parts (number_seams_by_part): the edge's parts and this number
+  /// name the seam.
   std::vector<int> seam_number;
   /// Per piece of the unfolding, where it went.
   std::vector<PiecePlacement> placements;
@@ -114,8 +118,8 @@ struct LayoutResult {
   /// When more than 2% of the labels have no room: how many times larger the model (or its faces)
   /// must be for all but 2% to find a clear spot; 1 otherwise.
   double label_room_factor = 1;
-  /// Numbers (as printed) of the seams that got no glue tab.
-  std::vector<int> dropped_tab_seams;
+  /// Names (seam_name, as listed) of the seams that got no glue tab.
+  std::vector<std::string> dropped_tab_seams;
   double paper_height_mm = 0;
 
   /// A point of the flat net (model units) of `piece` in its sheet's coordinates (mm, y down).
