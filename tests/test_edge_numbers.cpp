@@ -146,10 +146,45 @@ TEST(EdgeNumbers, NumbersRestartInEachPartAndEachPairOfPartsInOutlineOrder) {
 }
 
 TEST(EdgeNumbers, ASinglePartKeepsOneCountInOutlineOrder) {
-  const auto& ex = test::unfolded_example("fish_350.obj");
+  const auto ex = test::tetrahedron();
   ASSERT_EQ(ex.unfolding.piece_count, 1);
-  const auto pieces = scaled_pieces(ex.unfolding, 1);
+  const auto pieces = scaled_pieces(ex.unfolding, 40);
   const auto seams = find_seams(ex.unfolding, pieces);
   const auto outline = number_seams(pieces, seams);
   EXPECT_EQ(number_seams_by_part(seams, outline), outline);
+}
+
+// A seam whose one face has no room for its label and whose other face has: the tab goes on the side
+// without room and carries that label, and the face with room takes the mate's.
+TEST(EdgeNumbers, TabsOnTheSideWithoutRoomLeaveFewerLabelsWithoutAClearSpot) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 150 / ex.unfolding.model_extent);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const auto numbers = number_seams(pieces, seams);
+  std::vector<std::vector<FoldLine>> folds;
+  for (const ScaledPiece& p : pieces)
+    folds.push_back(fold_lines(ex.unfolding, p));
+  const LabelOptions o;
+  std::vector<double> widths;
+  for (int n : numbers)
+    widths.push_back(label_width_mm(number_text(n), o.min_mm, o));
+  const std::vector<int> wanted = tab_sides_for_labels(pieces, seams, widths, o);
+  ASSERT_EQ(wanted.size(), seams.size());
+  const auto decided = std::count_if(wanted.begin(), wanted.end(), [](int k) { return k >= 0; });
+  EXPECT_GT(decided, 10) << "the faces decide the side of some seams";
+  auto unclear = [&](const TabPlan& tabs, int& wanted_honoured) {
+    int count = 0;
+    for (const Label& l : place_labels(pieces, seams, numbers, tabs, folds, {}, o))
+      count += l.crowded || l.over_fold;
+    wanted_honoured = 0;
+    for (std::size_t s = 0; s < seams.size(); ++s)
+      wanted_honoured += wanted[s] >= 0 && tabs.tab_of_seam[s] && tabs.tab_of_seam[s]->side == wanted[s];
+    return count;
+  };
+  int honoured_by_default = 0, honoured = 0;
+  const int before = unclear(plan_tabs(pieces, seams, TabOptions{}), honoured_by_default);
+  const int after = unclear(plan_tabs(pieces, seams, TabOptions{}, {}, wanted), honoured);
+  EXPECT_GT(honoured, honoured_by_default);
+  EXPECT_GE(honoured, 0.8 * static_cast<double>(decided)) << "the wanted side gets the tab where it fits";
+  EXPECT_LT(after, before) << "labels without a clear spot";
 }

@@ -38,6 +38,17 @@ Box2 grown(Box2 b, double d) {
   return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
 }
 
+// The width the face beside `edge` leaves next to a label of `width` at the minimum height: a triangle
+// narrows linearly from the edge towards its apex.
+double face_room_mm(const ScaledPiece& piece, const OutlineEdge& edge, double width, const LabelOptions& o) {
+  const double length = norm(edge.b - edge.a);
+  const auto k = std::lower_bound(piece.faces.begin(), piece.faces.end(), edge.face) - piece.faces.begin();
+  if (k >= static_cast<std::ptrdiff_t>(piece.faces.size()) || !(length > 0)) return 0;
+  const double height = 2 * std::fabs(signed_area(piece.triangles_mm[k])) / length;
+  const double top = o.gap_mm + o.min_mm + o.clearance_mm;
+  return length * (1 - top / std::max(height, 1e-9)) - width;
+}
+
 Polygon label_box(Vec2 at, Vec2 dir, double width, double height) {
   const Vec2 up = perp_ccw(dir);
   return {at, at + dir * width, at + dir * width + up * height, at + up * height};
@@ -120,6 +131,24 @@ std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<con
     number[s] = ++last_of_pair[{std::min(a, b), std::max(a, b)}];
   }
   return number;
+}
+
+std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                      std::span<const double> widths_mm, const LabelOptions& options) {
+  std::vector<int> side(seams.size(), -1);
+  for (std::size_t s = 0; s < seams.size() && s < widths_mm.size(); ++s) {
+    std::array<bool, 2> room{};
+    bool both_sides = true;
+    for (int k = 0; k < 2; ++k) {
+      const SeamSide& at = seams[s].sides[k];
+      both_sides = both_sides && at.piece >= 0;
+      if (at.piece < 0) break;
+      const ScaledPiece& piece = pieces[at.piece];
+      room[k] = face_room_mm(piece, piece.outline_mm[at.loop][at.index], widths_mm[s], options) >= 0;
+    }
+    if (both_sides && room[0] != room[1]) side[s] = room[0] ? 1 : 0;
+  }
+  return side;
 }
 
 namespace {
@@ -252,22 +281,11 @@ class LabelPlacer {
         side.step_side = k == first;
         side.full = texts.full[s][k];
         side.brief = s < texts.brief.size() ? texts.brief[s][k] : side.full;
-        side.room_mm = face_room_mm(side, label_width_mm(side.brief, o_.min_mm, o_));
+        side.room_mm =
+            face_room_mm(pieces_[side.piece], *side.edge, label_width_mm(side.brief, o_.min_mm, o_), o_);
         sides_.push_back(std::move(side));
       }
     }
-  }
-
-  // The width the side's face leaves beside a label of `width` at the minimum height: a triangle
-  // narrows linearly from the edge towards its apex.
-  double face_room_mm(const SideTask& side, double width) const {
-    const ScaledPiece& piece = pieces_[side.piece];
-    const auto k =
-        std::lower_bound(piece.faces.begin(), piece.faces.end(), side.edge->face) - piece.faces.begin();
-    if (k >= static_cast<std::ptrdiff_t>(piece.faces.size())) return 0;
-    const double height = 2 * std::fabs(signed_area(piece.triangles_mm[k])) / side.length_mm;
-    const double top = o_.gap_mm + o_.min_mm + o_.clearance_mm;
-    return side.length_mm * (1 - top / std::max(height, 1e-9)) - width;
   }
 
   const std::string& hint_of(const SideTask& side) const {

@@ -128,6 +128,21 @@ std::vector<Label> place_draft_labels(const Draft& d, const SeamTexts& texts) {
                       d.label_taken);
 }
 
+// Per seam, the side whose tab should carry the label (tab_sides_for_labels), for the brief label: the
+// number, after a letter when the mate is another part (the letters come later; one stands for all).
+std::vector<int> tab_sides_wanted(const Draft& d, const LayoutOptions& o) {
+  if (!o.numbers) return {};
+  const LabelOptions label = label_options_in_use(o);
+  std::vector<double> widths(d.seams.size());
+  for (std::size_t s = 0; s < d.seams.size(); ++s) {
+    const bool cross = d.seams[s].sides[0].piece != d.seams[s].sides[1].piece;
+    std::string text = cross ? "B" : "";
+    text += number_text(d.printed[s]);
+    widths[s] = label_width_mm(text, label.min_mm, label);
+  }
+  return tab_sides_for_labels(d.pieces, d.seams, widths, label);
+}
+
 Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
   constexpr long kSteps = 5;  // pieces, seams, folds, tabs, letters and labels
   report(o, "drawing", 0, kSteps);
@@ -148,7 +163,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   std::iota(by_number.begin(), by_number.end(), 0);
   std::sort(by_number.begin(), by_number.end(), [&](int a, int b) { return d.numbers[a] < d.numbers[b]; });
   if (o.tabs) {
-    d.tabs = plan_tabs(d.pieces, d.seams, tab_options_in_use(o), by_number);
+    d.tabs = plan_tabs(d.pieces, d.seams, tab_options_in_use(o), by_number, tab_sides_wanted(d, o));
   } else {
     d.tabs.tab_of_seam.resize(d.seams.size());
   }
@@ -431,21 +446,27 @@ double flat_face_height_mm(const ScaledPiece& piece, const OutlineEdge& e, std::
   return height;
 }
 
-// How much larger the model must be for the labels that found no clear spot to find one: per label,
-// the scale at which its flat face is wide enough for the label's box at its lift above the edge (a
-// triangle narrows linearly towards its apex), then the factor that leaves at most 2% of the labels
-// without room (a sliver face needs absurd sizes and should not decide the advice). Edges shorter than
-// a label is high do not count either: a 0.2 mm edge would ask for a model 30 times larger, and its
-// seam is found by its neighbours' numbers.
-void measure_label_room(const Draft& d, const unfold::Unfolding& u, LayoutResult& r) {
+// What the labels of a draft say about the model's size: how many found no clear spot, and how much
+// larger the model must be for them to find one. Per label, the scale at which its flat face is wide
+// enough for the label's box at its lift above the edge (a triangle narrows linearly towards its apex),
+// then the factor that leaves at most 2% of the labels without room (a sliver face needs absurd sizes
+// and should not decide the advice); 1 when at most 2% lack room. Edges shorter than a label is high do
+// not count either: a 0.2 mm edge would ask for a model 30 times larger, and its seam is found by its
+// neighbours' numbers.
+struct LabelRoom {
+  int without_room = 0;
+  double factor = 1;
+};
+
+LabelRoom label_room(const Draft& d, const unfold::Unfolding& u) {
   constexpr double kTolerated = 0.02;
   const LabelOptions& metrics = d.label_options;  // as placed
   const std::vector<int> root = flat_face_roots(u);
   std::vector<double> factors;
-  int without_room = 0;
+  LabelRoom room;
   for (const Label& label : d.labels) {
     if (!label.crowded && !label.over_fold) continue;
-    ++without_room;
+    ++room.without_room;
     const SeamSide& side = d.seams[label.seam.index()].sides[label.side];
     const ScaledPiece& piece = d.pieces[side.piece];
     const OutlineEdge& e = piece.outline_mm[side.loop][side.index];
@@ -458,11 +479,33 @@ void measure_label_room(const Draft& d, const unfold::Unfolding& u, LayoutResult
     const double lift = metrics.gap_mm + h + metrics.clearance_mm;
     factors.push_back((width + lift * length / std::max(height, 1e-9)) / length);
   }
-  r.labels_without_room = without_room;
   const auto allowed = static_cast<std::size_t>(kTolerated * static_cast<double>(d.labels.size()));
-  if (factors.size() <= allowed) return;
+  if (room.without_room <= static_cast<int>(allowed) || factors.size() <= allowed) return room;
   std::sort(factors.begin(), factors.end(), std::greater<>());
-  r.label_room_factor = std::max(1.05, factors[allowed]);
+  room.factor = std::max(1.05, factors[allowed]);
+  return room;
+}
+
+// The remedy a maker can trust: the estimate sees each label alone, so the pieces are drawn again at
+// the advised size (tabs and labels, no packing), and the advice grows by what is still missing there,
+// for a few rounds. The same pieces at the larger size: parts the pipeline would cut smaller there
+// are not foreseen.
+void measure_label_room(const Draft& d, const unfold::Unfolding& u, const LayoutOptions& o, LayoutResult& r) {
+  constexpr int kRemedyRounds = 5;
+  // Labels that compete for one face are not in the estimate: where they still lack room at the
+  // advised size, the next round asks for at least this much more.
+  constexpr double kLeastGrowth = 1.2;
+  const LabelRoom asked = label_room(d, u);
+  r.labels_without_room = asked.without_room;
+  double factor = asked.factor;
+  LayoutOptions quiet = o;
+  quiet.progress = nullptr;
+  for (int round = 0; round < kRemedyRounds && factor > 1; ++round) {
+    const LabelRoom there = label_room(draw_pieces(u, quiet, r.scale_mm_per_unit * factor), u);
+    if (!(there.factor > 1)) break;
+    factor *= std::max(there.factor, kLeastGrowth);
+  }
+  r.label_room_factor = factor;
 }
 
 struct Attempt {
@@ -725,7 +768,7 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
   const Box2 area = packing_area(o);
   total_stats(area.width() * area.height(), r);
   note_dropped_tabs(d, o, r);
-  measure_label_room(d, u, r);
+  measure_label_room(d, u, o, r);
   r.piece_letters = d.letters;
   for (const Sheet& sheet : r.sheets)
     r.label_audit += audit_labels(sheet);

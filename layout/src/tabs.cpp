@@ -95,8 +95,14 @@ struct PieceState {
 // neighbour's tab to make room for a dropped seam.
 class TabPlanner {
  public:
-  TabPlanner(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options)
-      : pieces_(pieces), seams_(seams), o_(options), state_(pieces.size()), seam_at_(pieces.size()) {
+  TabPlanner(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
+             std::span<const int> wanted_sides)
+      : pieces_(pieces),
+        seams_(seams),
+        o_(options),
+        wanted_sides_(wanted_sides),
+        state_(pieces.size()),
+        seam_at_(pieces.size()) {
     plan_.tab_of_seam.resize(seams.size());
     settled_.assign(seams.size(), 0);
     for (std::size_t p = 0; p < pieces.size(); ++p) {
@@ -116,7 +122,7 @@ class TabPlanner {
   // tab) and settles the seam; false when neither side has room.
   bool place(int index) {
     const Seam& seam = seams_[index];
-    const int first = preferred_side(seam);
+    const int first = preferred_side(index, seam);
     std::optional<Tab> tab = try_side(index, first);
     // A full tab on the preferred side is taken as is; otherwise the side that keeps the larger tab.
     if (!is_full(tab, seam.sides[first])) {
@@ -158,7 +164,10 @@ class TabPlanner {
  private:
   // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
   // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
-  int preferred_side(const Seam& seam) const {
+  // A side the caller wants (its label fits on the tab, not on its face) comes first.
+  int preferred_side(int index, const Seam& seam) const {
+    if (static_cast<std::size_t>(index) < wanted_sides_.size() && wanted_sides_[index] >= 0)
+      return wanted_sides_[index];
     return neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
   }
 
@@ -279,16 +288,21 @@ class TabPlanner {
     if (length <= 0) return std::nullopt;
     const EdgeCorners free = corners(s, index);
     const std::vector<double> widths = tab_widths_to_try(length, o_);
+    // A tab wanted for its label keeps its full base up to its outer side: steep ends first.
+    const bool steep_first =
+        static_cast<std::size_t>(index) < wanted_sides_.size() && wanted_sides_[index] == k;
     for (double w : widths)
-      if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w)) return tab;
+      if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w, steep_first))
+        return tab;
     return best_stretch(s.piece, k, e, free, widths);
   }
 
   // A tab along p->q (the edge or a stretch of it) of width w whose slants are at most limit_p,
   // limit_q: gentle slants first; steeper ones (still within the corner's share) when the edge is short.
-  std::optional<Tab> fit_trapezoid(int piece, int k, Vec2 p, Vec2 q, double limit_p, double limit_q,
-                                   double w) const {
-    const std::array<double, 3> caps{o_.max_slant_rad, kSteeperSlants_rad[0], kSteeperSlants_rad[1]};
+  std::optional<Tab> fit_trapezoid(int piece, int k, Vec2 p, Vec2 q, double limit_p, double limit_q, double w,
+                                   bool steep_first = false) const {
+    std::array<double, 3> caps{o_.max_slant_rad, kSteeperSlants_rad[0], kSteeperSlants_rad[1]};
+    if (steep_first) std::reverse(caps.begin(), caps.end());
     for (double cap : caps) {
       const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
       Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
@@ -336,6 +350,7 @@ class TabPlanner {
   std::span<const ScaledPiece> pieces_;
   std::span<const Seam> seams_;
   const TabOptions& o_;
+  std::span<const int> wanted_sides_;  // per seam: the side to try first, or -1
   std::vector<PieceState> state_;
   std::vector<std::vector<std::vector<int>>> seam_at_;  // per piece, loop, outline index: its seam or -1
   std::vector<char> settled_;                           // per seam: tab placed or dropped
@@ -381,8 +396,8 @@ bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const
 }
 
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
-                  std::span<const int> order) {
-  TabPlanner planner(pieces, seams, options);
+                  std::span<const int> order, std::span<const int> wanted_sides) {
+  TabPlanner planner(pieces, seams, options, wanted_sides);
   std::vector<int> blocked;
   for (int index : planning_order(seams.size(), order))
     if (!planner.place(index)) blocked.push_back(index);

@@ -71,6 +71,13 @@ struct SeamTexts {
   std::vector<std::array<std::string, 2>> full, brief;
 };
 
+/// Per seam, the side whose glue tab should carry its label, for plan_tabs: the side whose face has no
+/// room beside the edge for a label of `widths_mm` (per seam) at the legible minimum, when the other
+/// side's face has; -1 where the faces do not decide. The tab takes the label the face cannot, and the
+/// mate's label goes on the face that has room.
+std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                      std::span<const double> widths_mm, const LabelOptions& options);
+
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
 /// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. Without
 /// `texts` (empty) a side prints number_text of its number. Every label first gets a spot at the

@@ -39,9 +39,11 @@ struct TabPlan {
   std::vector<SeamId> dropped;                  ///< seams without a tab, increasing
 };
 
-/// Tabs for `seams` (processed in the order of `order`, or seam order when empty).
+/// Tabs for `seams` (processed in the order of `order`, or seam order when empty). `wanted_sides` (per
+/// seam, may be empty) names the side whose tab is tried first (-1: the planner's choice, which
+/// alternates along the outlines); the other side still gets the tab where the wanted one has no room.
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
-                  std::span<const int> order = {});
+                  std::span<const int> order = {}, std::span<const int> wanted_sides = {});
 
 /// The widths a tab on an edge of `edge_length_mm` is tried at, widest first: the full width (at most
 /// width_per_length of the edge), then narrower by steps, down to min_width_mm (always the last).
