@@ -156,9 +156,16 @@ class SheetGrid {
 
   // False when some row of r, with its bottom row at y, is wider than any free run of the sheet row it
   // would lie on: the cheap test that skips the full rows of a filling sheet.
-  bool rows_may_fit(const Raster& r, int y) const {
-    for (int j = 0; j < r.height; ++j)
-      if (widest_free_[y + j] < r.widest_run[j]) return false;
+  // `hot` is the raster row that failed last, and becomes the one that fails: scanning down a row at a
+  // time, the row above it lands on the same sheet row next, so the check starts there.
+  bool rows_may_fit(const Raster& r, int y, int& hot) const {
+    for (int step = 0; step < r.height; ++step) {
+      const int j = (hot + 1 + step) % r.height;
+      if (widest_free_[y + j] < r.widest_run[j]) {
+        hot = j;
+        return false;
+      }
+    }
     return true;
   }
 
@@ -207,10 +214,11 @@ Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
   Spot best;
   for (const Raster& r : rasters) {
     if (r.width > grid.nx() || r.height > grid.ny() || r.cells > grid.free_cells()) continue;
+    int hot = -1;
     for (int y = grid.ny() - r.height; y >= 0; --y) {
       const double score_y = y + r.centroid_y;
       if (score_y < best.score_y - 1e-9) break;
-      if (!grid.rows_may_fit(r, y)) continue;
+      if (!grid.rows_may_fit(r, y, hot)) continue;
       const int x = grid.first_fit_in_row(r, y, 0);
       if (x < 0) continue;
       const double score_x = x + r.centroid_x;
