@@ -14,6 +14,7 @@
 #include "choose_parts.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/layout.hpp"
+#include "foldkit/layout/pack.hpp"
 #include "foldkit/layout/paper.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
@@ -30,6 +31,7 @@ struct Row {
   double size_mm = 0;
   std::string error;
   long sheets = 0, bound = 0;
+  long shape_bound = 0;  ///< the flat faces' shape bound (layout::shape_sheet_bound)
   int parts = 0, seams = 0, no_tab = 0;
   double coverage = 0, seconds = 0;
   double cpu_seconds = 0;  ///< process CPU time: the machine may be shared, the wall clock then lies
@@ -63,6 +65,8 @@ Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
     row.bound = std::max(1L, static_cast<long>(std::ceil(used / (area.width() * area.height()) - 1e-9)));
+    row.shape_bound = layout::shape_sheet_bound(
+        flat_face_cores_mm(parts.unfolding, *o.size_mm / unfolding.model_extent), area);
     row.parts = parts.unfolding.piece_count;
     row.seams = parts.unfolding.seam_count();
     row.no_tab = r.overall.dropped_tabs;
@@ -84,9 +88,9 @@ void print_row(const Row& row) {
   if (!row.error.empty())
     std::printf("%-28s %5d %5.0f | error: %s\n", row.mesh.c_str(), row.faces, row.size_mm, row.error.c_str());
   else
-    std::printf("%-28s %5d %5.0f | %6ld %5ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", row.mesh.c_str(), row.faces,
-                row.size_mm, row.sheets, row.bound, row.parts, 100 * row.coverage, row.no_tab, row.seams,
-                row.seconds, row.cpu_seconds);
+    std::printf("%-28s %5d %5.0f | %6ld %5ld %5ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", row.mesh.c_str(),
+                row.faces, row.size_mm, row.sheets, row.bound, row.shape_bound, row.parts, 100 * row.coverage,
+                row.no_tab, row.seams, row.seconds, row.cpu_seconds);
   std::fflush(stdout);
 }
 
@@ -121,7 +125,11 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
 
 // The figures the layout targets are judged by, over the rows without an error.
 struct Totals {
-  long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0, over = 0;
+  long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0;
+  long shape_bound = 0;     ///< sum of the larger of the two bounds per run
+  long over = 0;            ///< runs more than one sheet over the area bound
+  long over_reachable = 0;  ///< runs more than one sheet over the larger bound
+  long unreachable = 0;     ///< runs whose shape bound exceeds the area bound
   double seconds = 0, cpu_seconds = 0;
   std::vector<double> coverage;
   double ratio() const { return bound > 0 ? double(sheets) / double(bound) : NAN; }
@@ -135,7 +143,11 @@ Totals totals(const std::vector<Row>& rows) {
     if (!r.error.empty()) continue;
     t.sheets += r.sheets;
     t.bound += r.bound;
+    const long larger = std::max(r.bound, r.shape_bound);
+    t.shape_bound += larger;
     t.over += r.sheets > r.bound + 1;
+    t.over_reachable += r.sheets > larger + 1;
+    t.unreachable += r.shape_bound > r.bound;
     t.seconds += r.seconds;
     t.cpu_seconds += r.cpu_seconds;
     t.coverage.push_back(r.coverage);
@@ -160,6 +172,7 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
     } else {
       j.update({{"sheet_count", r.sheets},
                 {"area_bound_sheet_count", r.bound},
+                {"shape_bound_sheet_count", r.shape_bound},
                 {"part_count", r.parts},
                 {"coverage", r.coverage},
                 {"seam_count", r.seams},
@@ -171,6 +184,9 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                    {"area_bound_sheet_count", t.bound},
                    {"sheets_over_bound_ratio", t.ratio()},
                    {"runs_more_than_one_over_count", t.over},
+                   {"larger_bound_sheet_count", t.shape_bound},
+                   {"runs_area_bound_unreachable_count", t.unreachable},
+                   {"runs_more_than_one_over_larger_bound_count", t.over_reachable},
                    {"median_coverage", median(t.coverage)},
                    // over the runs of 350-1,000 faces at 150 mm
                    {"seams_without_tab_fraction", t.share()},
@@ -185,9 +201,12 @@ void print_totals(const Totals& t) {
     std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm", t.mid_no_tab,
                   t.mid_seams, 100 * t.share());
   std::printf(
-      "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, median coverage "
-      "%.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
-      t.sheets, t.bound, t.ratio(), t.over, 100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
+      "totals: %ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over; %ld runs where shapes "
+      "leave the area bound out of reach, larger bound %ld (x%.2f), %ld runs more than one sheet over it; "
+      "median coverage %.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
+      t.sheets, t.bound, t.ratio(), t.over, t.unreachable, t.shape_bound,
+      t.shape_bound > 0 ? double(t.sheets) / double(t.shape_bound) : NAN, t.over_reachable,
+      100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
 }
 
 }  // namespace
@@ -200,9 +219,9 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (!a.json_out)
     std::printf(
         "foldkit bench --layout: %s, %d-%d faces, %s, search unfolding (seed 1)\n%-28s %5s %5s | %6s %5s %5s "
-        "%8s %7s %7s %7s\n",
+        "%5s %8s %7s %7s %7s\n",
         corpus.string().c_str(), a.min_faces, a.max_faces, a.paper.c_str(), "mesh", "faces", "size", "sheets",
-        "bound", "parts", "coverage", "no tab", "s", "cpu s");
+        "area", "shape", "parts", "coverage", "no tab", "s", "cpu s");
   std::vector<Row> rows;
   for (const fs::path& file : mesh_files(corpus))
     if (a.filter.empty() || file.filename().string().find(a.filter) != std::string::npos)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "foldkit/geom/hull.hpp"
+#include "foldkit/layout/pack.hpp"
 #include "foldkit/unfold/parts.hpp"
 
 namespace foldkit::cli {
@@ -42,6 +43,23 @@ double hull_area(const unfold::Unfolding& u) {
       total += 0.5 * cross(hull[i], hull[(i + 1) % hull.size()]);
   }
   return total;
+}
+
+// The same faces in the same parts (part numbers aside).
+bool same_parts(const unfold::Unfolding& a, const unfold::Unfolding& b) {
+  if (a.piece_count != b.piece_count || a.num_faces() != b.num_faces()) return false;
+  // Parts are the same exactly when the first faces met map one to one onto each other's parts.
+  std::vector<int> a_to_b(a.piece_count, -1), b_to_a(b.piece_count, -1);
+  for (int f = 0; f < a.num_faces(); ++f) {
+    int& x = a_to_b[a.piece_of_face[f]];
+    int& y = b_to_a[b.piece_of_face[f]];
+    if (x < 0 && y < 0) {
+      x = b.piece_of_face[f];
+      y = a.piece_of_face[f];
+    }
+    if (x != b.piece_of_face[f] || y != a.piece_of_face[f]) return false;
+  }
+  return true;
 }
 
 struct Candidate {
@@ -154,10 +172,52 @@ void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o
 }
 
 // No partition needs fewer sheets than its area: reaching that bound ends the trials.
-long sheet_bound(const layout::LayoutOptions& o, double used_mm2) {
+long area_sheet_bound(const layout::LayoutOptions& o, double used_mm2) {
   const Box2 area = layout::printable_area(o);
   return std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
 }
+
+}  // namespace
+
+std::vector<layout::Polygon> flat_face_cores_mm(const unfold::Unfolding& u, double mm_per_unit) {
+  const std::vector<int> face_of = unfold::flat_face_of(u);
+  const int faces = face_of.empty() ? 0 : 1 + *std::max_element(face_of.begin(), face_of.end());
+  std::vector<std::vector<int>> triangles(faces);
+  for (int t = 0; t < u.num_faces(); ++t)
+    triangles[face_of[t]].push_back(t);
+  std::vector<layout::Polygon> cores;
+  for (const std::vector<int>& face : triangles) {
+    std::vector<Vec2> points;
+    double area = 0, largest = -1;
+    layout::Polygon biggest;
+    for (int t : face) {
+      const auto& tri = u.flat[t];
+      const double a = 0.5 * std::fabs(cross(tri[1] - tri[0], tri[2] - tri[0]));
+      area += a;
+      if (a > largest) {
+        largest = a;
+        biggest.assign(tri.begin(), tri.end());
+      }
+      points.insert(points.end(), tri.begin(), tri.end());
+    }
+    layout::Polygon hull = convex_hull(std::move(points));
+    // A convex face is its hull; a concave one holds at least its largest triangle.
+    layout::Polygon core = std::fabs(layout::signed_area(hull)) <= area * (1 + 1e-9) ? hull : biggest;
+    for (Vec2& v : core)
+      v = v * mm_per_unit;
+    cores.push_back(std::move(core));
+  }
+  return cores;
+}
+
+long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, double used_mm2) {
+  const long area = area_sheet_bound(o, used_mm2);
+  if (!o.size_mm || !(u.model_extent > 0)) return area;
+  return std::max(area, layout::shape_sheet_bound(flat_face_cores_mm(u, *o.size_mm / u.model_extent),
+                                                  layout::printable_area(o)));
+}
+
+namespace {
 
 // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack poorly;
 // smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged by packing
@@ -179,6 +239,11 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long b
     if (best_estimate()->sheets <= bound) break;
     if (o.deadline && std::chrono::steady_clock::now() + 4 * trial_time > *o.deadline) break;
     Candidate c = chooser.make(tries[t].first, tries[t].second);
+    // Low-poly models often come out the same at several fractions: each partition is packed once.
+    if (std::any_of(candidates.begin(), candidates.end(), [&](const Candidate& seen) {
+          return same_parts(seen.parts.unfolding, c.parts.unfolding);
+        }))
+      continue;
     chooser.estimate(c);
     candidates.push_back(std::move(c));
   }
@@ -218,7 +283,9 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     return {std::move(first.parts.unfolding), 0, 0, std::move(first.layout)};
   }
   const auto first_start = std::chrono::steady_clock::now();
-  const long bound = sheet_bound(o, chooser.estimate(first));
+  // Faces larger than half the room can leave the area bound out of reach: the trials stop at a bound
+  // that counts shapes too.
+  const long bound = least_sheets(u, o, chooser.estimate(first));
   const auto trial_time = std::chrono::steady_clock::now() - first_start;
   constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
   const bool large = mesh.num_faces() > kManyFaces;

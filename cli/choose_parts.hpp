@@ -5,6 +5,7 @@
 // full layout, and the one with the fewest sheets (then fewest parts, then roundest) is kept with its
 // layout. Neither unfold nor layout sees the other's result flow back.
 #include <optional>
+#include <vector>
 
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/unfold/mesh.hpp"
@@ -24,5 +25,13 @@ struct ChosenParts {
 /// when every piece fits; otherwise the best of the candidate partitions. Throws LayoutError.
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding,
                          const layout::LayoutOptions& options);
+
+/// Inside each flat face of `u` (every partition keeps it whole), a convex polygon in mm at
+/// `mm_per_unit`: the face itself when convex, else its largest triangle (layout::shape_sheet_bound).
+std::vector<layout::Polygon> flat_face_cores_mm(const unfold::Unfolding& u, double mm_per_unit);
+
+/// The fewest sheets any partition of `u` can take with `o`: the larger of the area bound for parts and
+/// tabs taking `used_mm2` and the shape bound of the flat faces (layout::shape_sheet_bound).
+long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, double used_mm2);
 
 }  // namespace foldkit::cli

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "choose_parts.hpp"
 #include "foldkit/unfold/parts.hpp"
@@ -71,4 +72,24 @@ TEST(ChooseParts, EachLayoutTriedReportsItsProgressUnderItsOwnNumber) {
   std::vector<std::string> sorted = stages;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+}
+
+TEST(ChooseParts, TheBoundCountsFacesThatCannotShareASheetAndTheChoiceReachesIt) {
+  // An 150 mm cube on A4: its six squares take three sheets by area but one sheet each by shape, and
+  // the parts chosen take exactly that many.
+  unfold::UnfoldOptions uo;
+  uo.threads = 1;
+  const unfold::Mesh mesh =
+      unfold::load_mesh(test::source_dir() / "tests" / "data" / "lowpoly" / "cube.obj").mesh;
+  const unfold::Unfolding u = unfold::unfold_mesh(mesh, uo).unfolding;
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  const std::vector<layout::Polygon> cores = cli::flat_face_cores_mm(u, *o.size_mm / u.model_extent);
+  ASSERT_EQ(cores.size(), 6u) << "one core per square face";
+  for (const layout::Polygon& core : cores)
+    EXPECT_NEAR(std::fabs(layout::signed_area(core)), 150.0 * 150.0, 1e-6);
+  EXPECT_EQ(cli::least_sheets(u, o, 0), 6);
+  const cli::ChosenParts chosen = cli::choose_parts(mesh, u, o);
+  ASSERT_TRUE(chosen.layout);
+  EXPECT_EQ(sheets_with_pieces(*chosen.layout), 6);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "foldkit/layout/outline.hpp"
 #include "foldkit/layout/pack.hpp"
@@ -165,4 +166,66 @@ TEST(Pack, ProgressCountsEveryPlacementAndEndsAtItsTotal) {
   EXPECT_EQ(seen.front().first, 1);
   EXPECT_EQ(seen.back().first, seen.back().second);
   EXPECT_EQ(seen.back().second % static_cast<long>(items.size()), 0) << "items times orders";
+}
+
+namespace {
+Polygon square(double side) {
+  return {{0, 0}, {side, 0}, {side, side}, {0, side}};
+}
+}  // namespace
+
+TEST(PackBound, SixSquaresTooWideToShareASheetNeedSixSheets) {
+  // 150 mm squares on 190 x 277 mm: by area three sheets, but each one covers the centre wherever it lies.
+  const std::vector<Polygon> cores(6, square(150));
+  EXPECT_EQ(shape_sheet_bound(cores, Box2{{0, 0}, {190, 277}}), 6);
+}
+
+TEST(PackBound, SquaresTooWideToGoSideBySideGoTwoToASheet) {
+  // 120 mm squares on 190 x 277 mm: two fit one above the other, never three (area: 12 x 14,400 mm² fits
+  // in 4 sheets).
+  const std::vector<Polygon> cores(12, square(120));
+  EXPECT_EQ(shape_sheet_bound(cores, Box2{{0, 0}, {190, 277}}), 6);
+}
+
+TEST(PackBound, NeverAboveTheSheetsThePackerUses) {
+  // The packer's count is one packing, so no lower bound may exceed it: squares, hexagons and triangles
+  // of many sizes, each packed without spacing, each set also turned by an odd angle.
+  auto regular = [](int corners, double radius, double turn) {
+    Polygon p;
+    for (int k = 0; k < corners; ++k) {
+      const double a = turn + 2 * std::numbers::pi * k / corners;
+      p.push_back({radius * std::cos(a), radius * std::sin(a)});
+    }
+    return p;
+  };
+  const Box2 area{{0, 0}, {190, 277}};
+  PackOptions o;
+  o.area_mm = area;
+  o.spacing_mm = 0;
+  o.shaken_orders = 0;
+  long beyond_area = 0;
+  for (int corners : {3, 4, 6})
+    for (double radius = 40; radius <= 125; radius += 7.5) {
+      std::vector<Polygon> cores;
+      std::vector<PackItem> items;
+      for (int i = 0; i < 7; ++i) {
+        cores.push_back(regular(corners, radius, 0.3 * i));
+        items.push_back(PackItem{{cores.back()}, {}});
+      }
+      const long bound = shape_sheet_bound(cores, area);
+      const PackResult packed = pack_items(items, o);
+      if (!packed.unplaced.empty()) continue;  // larger than the sheet
+      EXPECT_LE(bound, packed.sheet_count) << corners << " corners, radius " << radius;
+      const double area_sheets = std::ceil(total_area(cores) / (area.width() * area.height()));
+      beyond_area += bound > area_sheets;
+    }
+  EXPECT_GT(beyond_area, 5) << "the shapes should often say more than the area";
+}
+
+TEST(PackBound, SmallOrConcaveShapesCountNothingAndNothingIsZero) {
+  EXPECT_EQ(shape_sheet_bound({}, Box2{{0, 0}, {190, 277}}), 0);
+  const std::vector<Polygon> small(40, square(10));
+  EXPECT_EQ(shape_sheet_bound(small, Box2{{0, 0}, {190, 277}}), 0);
+  const std::vector<Polygon> concave(6, Polygon{{0, 0}, {150, 0}, {150, 150}, {75, 20}, {0, 150}});
+  EXPECT_EQ(shape_sheet_bound(concave, Box2{{0, 0}, {190, 277}}), 0) << "a concave core is refused";
 }

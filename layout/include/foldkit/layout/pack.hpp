@@ -62,6 +62,15 @@ struct PackResult {
 /// deadline passes.
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options);
 
+/// A lower bound on the sheets that items need, counting their shapes, not only their area: `cores_mm`
+/// holds, for each item, a convex counter-clockwise polygon lying inside it (a flat face no packing
+/// may cut). Items lie inside `area_mm` at any rotation and position and never overlap. For a point set
+/// P in the area (a lattice), every placement of core i covers at least c_i points of P (found over
+/// all rotations and positions); items on one sheet cover disjoint points, so no packing needs fewer
+/// than ceil(sum c_i / |P|) sheets. The largest such count over a few lattices; 0 without items. A 150 mm
+/// square on A4 covers the centre wherever it lies, so six of them need six sheets (area: three).
+long shape_sheet_bound(std::span<const Polygon> cores_mm, const Box2& area_mm);
+
 /// The same with libnest2d (options.engine is ignored; keep-outs are not supported).
 PackResult pack_items_nest2d(std::span<const PackItem> items, const PackOptions& options);
 
