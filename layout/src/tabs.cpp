@@ -166,9 +166,13 @@ class TabPlanner {
   // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
   // A side the caller wants (its label fits on the tab, not on its face) comes first.
   int preferred_side(int index, const Seam& seam) const {
-    if (static_cast<std::size_t>(index) < wanted_sides_.size() && wanted_sides_[index] >= 0)
-      return wanted_sides_[index];
+    if (const int wanted = wanted_side(index); wanted >= 0) return wanted;
     return neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
+  }
+
+  // The side the caller wants for seam `index`, or -1.
+  int wanted_side(int index) const {
+    return static_cast<std::size_t>(index) < wanted_sides_.size() ? wanted_sides_[index] : -1;
   }
 
   int neighbours_with_tabs(const SeamSide& s) const {
@@ -289,8 +293,7 @@ class TabPlanner {
     const EdgeCorners free = corners(s, index);
     const std::vector<double> widths = tab_widths_to_try(length, o_);
     // A tab wanted for its label keeps its full base up to its outer side: steep ends first.
-    const bool steep_first =
-        static_cast<std::size_t>(index) < wanted_sides_.size() && wanted_sides_[index] == k;
+    const bool steep_first = wanted_side(index) == k;
     for (double w : widths)
       if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w, steep_first))
         return tab;
