@@ -112,6 +112,35 @@ TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClear
 }
 
 namespace {
+TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
+  // A 7 mm triangle with two part letters standing side by side over its base: "12" at 2 mm (3.8 mm
+  // wide) covers one of them wherever it goes beside the base, and both in the base's middle.
+  ScaledPiece piece;
+  piece.index = 0;
+  piece.faces = {0};
+  const Vec2 a{0, 0}, b{7, 0}, c{3.5, 6.06};
+  piece.triangles_mm = {Triangle2{a, b, c}};
+  piece.outline_mm = {{OutlineEdge{0, 0, 0, a, b}, OutlineEdge{1, 0, 1, b, c}, OutlineEdge{2, 0, 2, c, a}}};
+  piece.area_mm2 = 21.2;
+  Seam seam;
+  seam.edge = 0;
+  seam.sides = {SeamSide{0, 0, 0}, SeamSide{}};
+  const std::vector<ScaledPiece> pieces{piece};
+  const std::vector<Seam> seams{seam};
+  const std::vector<int> numbers{12};
+  const Polygon left{{0.8, 0}, {3.4, 0}, {3.4, 10}, {0.8, 10}},
+      right{{3.6, 0}, {6.2, 0}, {6.2, 10}, {3.6, 10}};
+  const std::vector<std::vector<Polygon>> taken{{left, right}};
+  const auto labels = place_labels(pieces, seams, numbers, TabPlan{}, {}, {}, LabelOptions{}, {}, taken);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_TRUE(l.crowded);
+  EXPECT_LE(convex_overlap(l.box_mm, left, 0) + convex_overlap(l.box_mm, right, 0), 1);
+  const Vec2 middle = l.at_mm + l.dir * (0.5 * label_width_mm(l.text, l.height_mm, LabelOptions{})) +
+                      perp_ccw(l.dir) * (0.5 * l.height_mm);
+  EXPECT_TRUE(inside_convex(piece.triangles_mm[0], middle, 0)) << "the label's middle is on its face";
+}
+
 LayoutOptions spot_at_150() {
   LayoutOptions o;
   o.size_mm = 150;

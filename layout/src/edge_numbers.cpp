@@ -25,6 +25,8 @@ constexpr double kSmallLabel = 1.2;
 constexpr double kHighestLiftSmall = 1.5, kHighestLift = 0.9;
 // The lifts tried between the edge and the highest, in label heights.
 constexpr double kMiddleLift = 0.4;
+// Rounds over the labels that find no clear spot, each moving to where it runs into the least.
+constexpr int kCrowdedRounds = 2;
 
 Box2 piece_region(const ScaledPiece& piece) {
   Box2 b;
@@ -154,7 +156,7 @@ std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::
 namespace {
 
 // How far a label is from clear, in the order placement gives in: clear of every line and label;
-// across a fold line; touching the outline too; nowhere clear (on the edge's middle anyway).
+// across a fold line; touching the outline too; nowhere clear (where it runs into the least).
 enum class Clearance { Clear, OverFold, OverOutline, Nowhere };
 
 // What a label says, most informative first: the full text (with the mate's sheet) or the short one,
@@ -205,8 +207,14 @@ class LabelPlacer {
     for (Clearance level : {Clearance::OverFold, Clearance::OverOutline})
       for (std::size_t i : hardest_first)
         if (!sides_[i].label) try_at_minimum(sides_[i], level);
-    for (SideTask& side : sides_)
-      if (!side.label) place_on_middle(side);
+    std::vector<std::size_t> crowded;
+    for (std::size_t i = 0; i < sides_.size(); ++i)
+      if (!sides_[i].label) crowded.push_back(i);
+    // Each spot is chosen seeing only the labels placed before it: a second round lets the earlier
+    // ones move away from the later.
+    for (int round = 0; round < kCrowdedRounds; ++round)
+      for (std::size_t i : crowded)
+        place_least_crowded(sides_[i]);
     for (SideTask& side : sides_)
       grow(side);
     if (!hints_.empty()) show_every_step();
@@ -475,13 +483,60 @@ class LabelPlacer {
       commit(side, std::move(*label), level, 3);
   }
 
-  void place_on_middle(SideTask& side) {
+  // What a label with no clear spot runs into, worst first: another label (the two become unreadable),
+  // the outline (cutting takes part of the text away), fold lines.
+  struct Crowding {
+    int labels = 0, outlines = 0, folds = 0;
+    auto operator<=>(const Crowding&) const = default;
+  };
+  Crowding crowding(int p, const Polygon& box) const {
+    const Box2 reach = grown(bounds_of(box), o_.clearance_mm);
+    const PieceObstacles& ob = obstacles_[p];
+    Crowding c;
+    ob.line_grid.visit(reach, [&](int i) {
+      const Segment& s = ob.lines[i];
+      const std::array<Vec2, 2> seg{s.a, s.b};
+      if (convex_overlap(box, seg, -o_.clearance_mm)) ++(s.fold ? c.folds : c.outlines);
+      return true;
+    });
+    ob.label_grid.visit(reach, [&](int k) {
+      c.labels += ob.label_active[k] && convex_overlap(box, ob.labels[k], -o_.clearance_mm);
+      return true;
+    });
+    return c;
+  }
+
+  // A label no spot is clear for still prints beside its edge, at the legible minimum, where it runs
+  // into the least: over fold lines or the outline rather than over another label, so that each stays
+  // readable. Among equals the spot nearest the edge's middle (the first tried).
+  void place_least_crowded(SideTask& side) {
+    static constexpr std::array<double, 9> kAlong{0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0, 1};
     const OutlineEdge& e = *side.edge;
     const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
     const Form brief{false, false};
-    const double w = full_width(side, o_.min_mm, brief);
-    const Vec2 at = 0.5 * (e.a + e.b) - dir * (0.5 * w) + up * o_.gap_mm;
-    commit(side, make_label(side, at, dir, o_.min_mm, brief, false), Clearance::Nowhere, kForms.size() - 1);
+    const double h = o_.min_mm, w = full_width(side, h, brief);
+    if (side.slot >= 0) obstacles_[side.piece].label_active[side.slot] = false;
+    std::optional<Label> best;
+    Crowding least;
+    auto consider = [&](Vec2 at, Vec2 along, Vec2 centre) {
+      if (best && !inside_piece(side.piece, centre)) return;
+      Label label = make_label(side, at, along, h, brief, false);
+      const Crowding c = crowding(side.piece, label.box_mm);
+      if (!best || c < least) {
+        least = c;
+        best = std::move(label);
+      }
+    };
+    for (double lift : {o_.gap_mm, o_.gap_mm + kMiddleLift * h, o_.gap_mm + kHighestLiftSmall * h})
+      for (double t : kAlong) {
+        const Vec2 at = e.a + dir * (t * side.length_mm - 0.5 * w) + up * lift;
+        consider(at, dir, at + dir * (0.5 * w) + up * (0.5 * h));
+      }
+    for (double t : kAlong) {
+      const Vec2 at = e.a + dir * (t * side.length_mm + 0.5 * h) + up * o_.gap_mm;
+      consider(at, up, at + up * (0.5 * w) - dir * (0.5 * h));
+    }
+    commit(side, std::move(*best), Clearance::Nowhere, kForms.size() - 1);
   }
 
   // A more informative form (the full text, the step mark) where the room allows, then a larger size;

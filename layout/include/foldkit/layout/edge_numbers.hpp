@@ -44,7 +44,7 @@ struct Label {
   Vec2 dir{1, 0};
   double height_mm = 0;
   bool on_tab = false;
-  bool crowded = false;  ///< no clear spot: placed at the minimum size on the edge's middle anyway
+  bool crowded = false;  ///< no clear spot: at the minimum size beside the edge where it runs into the least
   /// Text drawn just after the number in the hint role (the assembly step), "" for none.
   std::string hint;
   Polygon box_mm;          ///< the area the label (with its hint) covers
