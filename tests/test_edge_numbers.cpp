@@ -82,21 +82,30 @@ TEST(EdgeNumbers, ALabelInsideAPieceReadsAlongItsEdgeWithItsFootTowardsIt) {
   }
 }
 
-TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClearOfEveryLine) {
-  // One needle triangle, 4 mm at its glued base, 30 mm tall: "12" at 2 mm (3.8 mm wide) does not fit
-  // along the base, 2.75 mm above it, where the face is 3.6 mm wide; across the base it does.
+namespace {
+// One counter-clockwise triangle a, b, c as a piece whose base a-b is glued to another part.
+struct OneTriangle {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+};
+OneTriangle one_triangle_glued_at_its_base(Vec2 a, Vec2 b, Vec2 c) {
   ScaledPiece piece;
   piece.index = 0;
   piece.faces = {0};
-  const Vec2 a{0, 0}, b{4, 0}, c{2, 30};
   piece.triangles_mm = {Triangle2{a, b, c}};
   piece.outline_mm = {{OutlineEdge{0, 0, 0, a, b}, OutlineEdge{1, 0, 1, b, c}, OutlineEdge{2, 0, 2, c, a}}};
-  piece.area_mm2 = 60;
+  piece.area_mm2 = std::fabs(signed_area(piece.triangles_mm[0]));
   Seam seam;
   seam.edge = 0;
   seam.sides = {SeamSide{0, 0, 0}, SeamSide{}};
-  const std::vector<ScaledPiece> pieces{piece};
-  const std::vector<Seam> seams{seam};
+  return {{piece}, {seam}};
+}
+}  // namespace
+
+TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClearOfEveryLine) {
+  // One needle triangle, 4 mm at its glued base, 30 mm tall: "12" at 2 mm (3.8 mm wide) does not fit
+  // along the base, 2.75 mm above it, where the face is 3.6 mm wide; across the base it does.
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {4, 0}, {2, 30});
   const std::vector<int> numbers{12};
   LabelOptions o;
   o.min_mm = 2;
@@ -108,25 +117,13 @@ TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClear
   EXPECT_FALSE(l.over_fold);
   EXPECT_DOUBLE_EQ(l.height_mm, 2);
   for (Vec2 corner : l.box_mm)
-    EXPECT_TRUE(inside_convex(piece.triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+    EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
 }
 
-namespace {
 TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
   // A 7 mm triangle with two part letters standing side by side over its base: "12" at 2 mm (3.8 mm
   // wide) covers one of them wherever it goes beside the base, and both in the base's middle.
-  ScaledPiece piece;
-  piece.index = 0;
-  piece.faces = {0};
-  const Vec2 a{0, 0}, b{7, 0}, c{3.5, 6.06};
-  piece.triangles_mm = {Triangle2{a, b, c}};
-  piece.outline_mm = {{OutlineEdge{0, 0, 0, a, b}, OutlineEdge{1, 0, 1, b, c}, OutlineEdge{2, 0, 2, c, a}}};
-  piece.area_mm2 = 21.2;
-  Seam seam;
-  seam.edge = 0;
-  seam.sides = {SeamSide{0, 0, 0}, SeamSide{}};
-  const std::vector<ScaledPiece> pieces{piece};
-  const std::vector<Seam> seams{seam};
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {7, 0}, {3.5, 6.06});
   const std::vector<int> numbers{12};
   const Polygon left{{0.8, 0}, {3.4, 0}, {3.4, 10}, {0.8, 10}},
       right{{3.6, 0}, {6.2, 0}, {6.2, 10}, {3.6, 10}};
@@ -138,9 +135,10 @@ TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
   EXPECT_LE(convex_overlap(l.box_mm, left, 0) + convex_overlap(l.box_mm, right, 0), 1);
   const Vec2 middle = l.at_mm + l.dir * (0.5 * label_width_mm(l.text, l.height_mm, LabelOptions{})) +
                       perp_ccw(l.dir) * (0.5 * l.height_mm);
-  EXPECT_TRUE(inside_convex(piece.triangles_mm[0], middle, 0)) << "the label's middle is on its face";
+  EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], middle, 0)) << "the label's middle is on its face";
 }
 
+namespace {
 LayoutOptions spot_at_150() {
   LayoutOptions o;
   o.size_mm = 150;
