@@ -2,7 +2,7 @@
 // re-attach edge of the cut-off side) moves, and applies the one that lowers the overlap count most
 // (or keeps it, to walk plateaus). Only the moved side is re-tested (CutTree::reattach_cost), which is
 // what keeps steps cheap at thousands of faces. A short tabu list stops the walk from undoing itself;
-// a restart from a perturbed minimum-perimeter tree leaves regions where it stalls.
+// a restart from a tree of perturbed cut weights leaves regions where it stalls.
 #include "foldkit/unfold/search.hpp"
 
 #include <algorithm>
@@ -44,8 +44,8 @@ constexpr int kCheckpointSteps = 16;
 constexpr double kReportInterval_s = 0.2;
 // The overlap change a kick starts from: larger than any move can add, so the least bad candidate wins.
 constexpr int kAnyDelta = 1 << 20;
-// Largest noise added to a minimum-perimeter weight (weights lie in [0, 1]) for a fresh tree: reorders
-// edges of similar length, keeps the long ones early.
+// Largest noise added to a cut weight (weights lie in [0, 1]) for a fresh tree: reorders
+// edges of similar weight, keeps the order of the clearly lighter and heavier ones.
 constexpr double kRestartWeightNoise = 0.3;
 // The first rounds are this fraction of `round_steps`, doubling up to it: small meshes finish at once.
 constexpr int kFirstRoundDivisor = 8;
@@ -226,7 +226,7 @@ class Walker {
     ++restarts_;
   }
 
-  // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but different
+  // A fresh tree from perturbed cut weights: close to the good trees, but different
   // enough to leave a region the walk keeps returning to. It starts a new episode: its descent is not
   // cut short by kicks back to the old best tree.
   void fresh_tree() {
