@@ -204,3 +204,27 @@ TEST(DualGraph, CutWeightsGiveTheWeightsTheirPreferenceNames) {
   EXPECT_EQ(cut_weights(mesh, {SeamPreference::Roomy, 2}), roomy_seam_weights(mesh, 2));
   EXPECT_NE(roomy_seam_weights(mesh, 2), roomy_seam_weights(mesh, 6));
 }
+
+TEST(DualGraph, BalancedWeightsKeepTheMinimumPerimeterOrderAndLightenOnlyTheTightEdges) {
+  Mesh mesh = load_mesh(test::example_mesh("bob_350.obj")).mesh;
+  const CutOptions balanced{SeamPreference::Balanced, 3, 1};
+  auto w = cut_weights(mesh, balanced);
+  auto by_length = min_perimeter_weights(mesh);
+  auto roomy = roomy_seam_weights(mesh, 3);  // monotone in the room: the median room is its median
+  const double median_roomy = median(roomy);
+  int tight = 0, lightened = 0;
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    EXPECT_LE(w[e], by_length[e] + 1e-12);
+    if (roomy[e] >= median_roomy) {
+      EXPECT_DOUBLE_EQ(w[e], by_length[e]) << "edge " << e << " has room and keeps its weight";
+    } else {
+      ++tight;
+      lightened += w[e] < by_length[e] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(tight, mesh.num_edges() / 3);
+  EXPECT_GT(lightened, tight * 9 / 10);
+  // The sliver's edges are tight: lighter than their length alone would make them.
+  for (int e : mesh.face_edges[thinnest_face(mesh)])
+    EXPECT_LT(w[e], by_length[e]) << "edge " << e;
+}

@@ -42,7 +42,10 @@ std::vector<double> min_perimeter_weights(const Mesh& mesh) {
   return normalised(mesh, length, 0);
 }
 
-std::vector<double> roomy_seam_weights(const Mesh& mesh, double label_aspect) {
+namespace {
+
+// The room of each edge (roomy_seam_weights), 0 on boundary edges.
+std::vector<double> edge_room(const Mesh& mesh, double label_aspect) {
   const double aspect = std::max(label_aspect, 0.0);
   std::vector<double> room(mesh.num_edges(), 0.0);
   for (int e = 0; e < mesh.num_edges(); ++e) {
@@ -58,13 +61,40 @@ std::vector<double> roomy_seam_weights(const Mesh& mesh, double label_aspect) {
     }
     room[e] = least;
   }
-  return normalised(mesh, room, 1);
+  return room;
+}
+
+double median_interior(const Mesh& mesh, const std::vector<double>& measure) {
+  std::vector<double> v;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (!mesh.edges[e].boundary()) v.push_back(measure[e]);
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+std::vector<double> balanced_weights(const Mesh& mesh, const CutOptions& options) {
+  const std::vector<double> room = edge_room(mesh, options.label_aspect);
+  const double tight = options.tight_share * median_interior(mesh, room);
+  std::vector<double> weight = min_perimeter_weights(mesh);
+  if (!(tight > 0)) return weight;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (!mesh.edges[e].boundary()) weight[e] *= std::min(1.0, room[e] / tight);
+  return weight;
+}
+
+}  // namespace
+
+std::vector<double> roomy_seam_weights(const Mesh& mesh, double label_aspect) {
+  return normalised(mesh, edge_room(mesh, label_aspect), 1);
 }
 
 std::vector<double> cut_weights(const Mesh& mesh, const CutOptions& options) {
   switch (options.prefer) {
     case SeamPreference::Roomy:
       return roomy_seam_weights(mesh, options.label_aspect);
+    case SeamPreference::Balanced:
+      return balanced_weights(mesh, options);
     case SeamPreference::Short:
       break;
   }

@@ -147,7 +147,8 @@ class Walker {
   }
 
   // Moves cutting e: tries up to attach_tries re-attach edges of its smaller side; keeps in `best` the
-  // first that changes the overlap count by less than `best_delta` (which it lowers).
+  // first that changes the overlap count by less than `best_delta` (which it lowers) or, with
+  // prefer_weighted_ties, by as much as `best` but trading a lighter cut for a heavier one.
   void try_cut(EdgeId e, int& best_delta, Move& best) {
     if (tabu(e) || cons_.fold(e)) return;
     tree_.smaller_side(e, side_);
@@ -158,7 +159,9 @@ class Walker {
     for (int t = 0; t < tries; ++t) {
       const EdgeId a = (t == 0 && opt_.near_first && !near_.empty()) ? near_[uniform(rng_, near_.size())]
                                                                      : attach_[uniform(rng_, attach_.size())];
-      const int limit = old + best_delta - 1;
+      const bool ties =
+          opt_.prefer_weighted_ties && best.cut.valid() && gain(e, a) > gain(best.cut, best.attach);
+      const int limit = old + best_delta - (ties ? 0 : 1);
       if (limit < 0) break;
       int cost = tree_.reattach_cost(side_, a, limit);
       if (cost <= limit) {
@@ -167,6 +170,9 @@ class Walker {
       }
     }
   }
+
+  // What a move gains in the weights' eyes: cutting e (heavy: a preferred cut) and folding a (light).
+  double gain(EdgeId e, EdgeId a) const { return ctx_.weight[e.index()] - ctx_.weight[a.index()]; }
 
   // attach_: the cut edges from side_ (the smaller side of e) to the rest of its piece that may fold;
   // near_: those of them sharing a vertex with e.
