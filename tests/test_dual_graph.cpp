@@ -191,8 +191,8 @@ TEST(DualGraph, TheRoomyTreeCutsLongerEdgesWithMoreRoomThanTheMinimumPerimeterTr
     }
     return least;
   };
-  const EdgeStates roomy = spanning_forest(mesh, cut_weights(mesh, {SeamPreference::Roomy, 1}));
-  const EdgeStates shortest = spanning_forest(mesh, cut_weights(mesh, {SeamPreference::Short, 1}));
+  const EdgeStates roomy = spanning_forest(mesh, cut_weights(mesh, {SeamPreference::Roomy, 1, 1}));
+  const EdgeStates shortest = spanning_forest(mesh, cut_weights(mesh, {SeamPreference::Short, 1, 1}));
   EXPECT_EQ(folds(roomy), mesh.num_faces() - 1);
   EXPECT_GT(mean_cut(roomy, length), 1.3 * mean_cut(shortest, length));
   EXPECT_GT(mean_cut(roomy, room), 1.3 * mean_cut(shortest, room));
@@ -200,8 +200,8 @@ TEST(DualGraph, TheRoomyTreeCutsLongerEdgesWithMoreRoomThanTheMinimumPerimeterTr
 
 TEST(DualGraph, CutWeightsGiveTheWeightsTheirPreferenceNames) {
   Mesh mesh = load_mesh(test::example_mesh("spot_128.obj")).mesh;
-  EXPECT_EQ(cut_weights(mesh, {SeamPreference::Short, 3}), min_perimeter_weights(mesh));
-  EXPECT_EQ(cut_weights(mesh, {SeamPreference::Roomy, 2}), roomy_seam_weights(mesh, 2));
+  EXPECT_EQ(cut_weights(mesh, {SeamPreference::Short, 3, 1}), min_perimeter_weights(mesh));
+  EXPECT_EQ(cut_weights(mesh, {SeamPreference::Roomy, 2, 1}), roomy_seam_weights(mesh, 2));
   EXPECT_NE(roomy_seam_weights(mesh, 2), roomy_seam_weights(mesh, 6));
 }
 
