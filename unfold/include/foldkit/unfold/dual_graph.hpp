@@ -34,8 +34,8 @@ enum class SeamPreference : unsigned char {
 
 /// How the unfolders weigh the edges they may cut (UnfoldOptions::cuts).
 struct CutOptions {
-  /// Balanced by default: on the 350-face corpus at 150 mm it halves what Roomy gains on labels
-  /// crossing lines without Roomy's 40% more parts (docs/unfolding.md, "Seams with room").
+  /// Balanced by default: at 150 mm it keeps most of what Roomy gains on labels crossing lines, without
+  /// Roomy's 40% more parts (docs/unfolding.md, "Seams with room").
   SeamPreference prefer = SeamPreference::Balanced;
   /// Roomy: the label shape the room is measured for (width over height; "B12" at 2 mm is about 3).
   double label_aspect = 3;
