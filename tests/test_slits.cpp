@@ -37,9 +37,7 @@ class SlitsOnExamples : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SlitsOnExamples, MostSlitsCloseAndTheUnfoldingStaysOneValidPiece) {
   const Mesh mesh = load(GetParam());
-  // The share below was measured on minimum-perimeter trees; the roomier default cuts leave bob_350 a
-  // slit or two more (20 of 57), a trade the cut preference makes (docs/unfolding.md).
-  const UnfoldContext ctx = make_context(mesh, {SeamPreference::Short, 3, 1});
+  const UnfoldContext ctx = make_context(mesh);
   CutTree tree = solved_tree(ctx);
   const SlitOptions opt;
   const int before = count_slits(tree, opt.min_gap_per_length);
