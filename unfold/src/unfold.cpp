@@ -54,11 +54,11 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
   switch (options.method) {
     case Method::Mst:
       if (progress) progress({"mst", 0, 0, 0, elapsed()});
-      result.unfolding = unfold_mst(mesh, constraints);
+      result.unfolding = unfold_mst(mesh, constraints, options.cuts);
       result.method = "mst";
       break;
     case Method::Search: {
-      const UnfoldContext ctx = make_context(mesh);
+      const UnfoldContext ctx = make_context(mesh, options.cuts);
       SearchOptions so = options.search;
       so.seed = options.seed;
       so.threads = options.threads;
@@ -76,7 +76,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       break;
     }
     case Method::Ga: {
-      const UnfoldContext ctx = make_context(mesh);
+      const UnfoldContext ctx = make_context(mesh, options.cuts);
       GaOptions go = options.ga;
       go.seed = options.seed;
       go.time_limit_s = options.time_limit_s;

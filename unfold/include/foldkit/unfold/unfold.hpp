@@ -47,6 +47,8 @@ struct UnfoldOptions {
   /// no glue tab fits.
   bool close_slits = true;
   SlitOptions slits;
+  /// Which cuts every unfolder prefers where several trees unfold as well (dual_graph.hpp).
+  CutOptions cuts;
   SearchOptions search;  ///< `--method search` (portfolio, tabu tenure, ...)
   GaOptions ga;          ///< `--method ga` (population, fitness weights, ...)
 };
