@@ -228,3 +228,74 @@ TEST(DualGraph, BalancedWeightsKeepTheMinimumPerimeterOrderAndLightenOnlyTheTigh
   for (int e : mesh.face_edges[thinnest_face(mesh)])
     EXPECT_LT(w[e], by_length[e]) << "edge " << e;
 }
+
+TEST(DualGraph, EdgesWithoutRoomForTheSmallestLabelAreFoldedBeforeEveryEdgeWithRoom) {
+  Mesh mesh = load_mesh(test::example_mesh("bob_350.obj")).mesh;
+  const std::vector<double> room = edge_label_room(mesh, 3);
+  CutOptions cuts;
+  cuts.label_room = median(room);
+  const std::vector<char> tight = tight_edges(mesh, cuts);
+  const std::vector<double> w = cut_weights(mesh, cuts), by_length = min_perimeter_weights(mesh);
+  double heaviest_tight = -1e9, lightest_roomy = 1e9;
+  int tight_count = 0;
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    // Without tabs (label_tab_length 0) an edge is tight, 2, when either side lacks room.
+    EXPECT_EQ(tight[e], !mesh.edges[e].boundary() && room[e] < cuts.label_room ? 2 : 0) << "edge " << e;
+    if (tight[e]) {
+      ++tight_count;
+      heaviest_tight = std::max(heaviest_tight, w[e]);
+    } else {
+      lightest_roomy = std::min(lightest_roomy, w[e]);
+      EXPECT_DOUBLE_EQ(w[e], by_length[e]) << "edge " << e << " has room: the seam stays short";
+    }
+  }
+  EXPECT_GT(tight_count, mesh.num_edges() / 3);
+  EXPECT_LE(heaviest_tight + 1, lightest_roomy);  // a whole weight range apart
+  // The spanning tree cuts fewer tight edges than the minimum-perimeter tree.
+  auto tight_cuts = [&](const EdgeStates& s) {
+    int n = 0;
+    for (int e = 0; e < mesh.num_edges(); ++e)
+      n += tight[e] && is_cut(s, e) ? 1 : 0;
+    return n;
+  };
+  const EdgeStates with_room = spanning_forest(mesh, w), shortest = spanning_forest(mesh, by_length);
+  EXPECT_EQ(folds(with_room), mesh.num_faces() - 1);
+  EXPECT_LT(tight_cuts(with_room), tight_cuts(shortest) / 2);
+}
+
+TEST(DualGraph, WithoutALabelRoomOrAtALargePrintNoEdgeIsTightAndTheWeightsStay) {
+  Mesh mesh = load_mesh(test::example_mesh("bob_350.obj")).mesh;
+  const std::vector<double> room = edge_label_room(mesh, 3);
+  double least = 1e9;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (!mesh.edges[e].boundary()) least = std::min(least, room[e]);
+  ASSERT_GT(least, 0);
+  for (double label_room : {0.0, 0.5 * least}) {
+    CutOptions cuts;
+    cuts.label_room = label_room;
+    const std::vector<char> tight = tight_edges(mesh, cuts);
+    EXPECT_EQ(std::count(tight.begin(), tight.end(), 1), 0) << "label room " << label_room;
+    EXPECT_EQ(cut_weights(mesh, cuts), min_perimeter_weights(mesh)) << "label room " << label_room;
+  }
+}
+
+TEST(DualGraph, AnEdgeLongEnoughForATabLabelIsLessTightWhenOneSideHasRoom) {
+  Mesh mesh = load_mesh(test::example_mesh("bob_350.obj")).mesh;
+  CutOptions no_tabs;
+  no_tabs.label_room = median(edge_label_room(mesh, 3));
+  CutOptions tabs = no_tabs;
+  tabs.label_tab_length = 1e-9;  // every edge takes a tab label
+  const std::vector<char> without = tight_edges(mesh, no_tabs), with = tight_edges(mesh, tabs);
+  const std::vector<double> w = cut_weights(mesh, tabs);
+  int one_side = 0;
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    EXPECT_LE(with[e], without[e]) << "edge " << e;
+    if (with[e] == 1) {
+      ++one_side;
+      EXPECT_EQ(without[e], 2);
+      EXPECT_LT(w[e], 0);   // below every edge with room on both sides
+      EXPECT_GE(w[e], -1);  // above every edge where no label fits
+    }
+  }
+  EXPECT_GT(one_side, mesh.num_edges() / 10);
+}

@@ -38,11 +38,32 @@ struct CutOptions {
   /// labels and tabs at 150 mm (docs/unfolding.md, "Seams with room"), but its different parts trip four
   /// layout tests (part letters, guide, label remedy, choose parts) that must be looked at first.
   SeamPreference prefer = SeamPreference::Short;
-  /// Roomy: the label shape the room is measured for (width over height; "B12" at 2 mm is about 3).
+  /// Roomy, and label_room: the label shape the room is measured for (width over height; "B12" at
+  /// 2 mm is about 3).
   double label_aspect = 3;
   /// Balanced: edges with less room than this share of the median room count as tight.
   double tight_share = 1;
+  /// The room (edge_label_room, model units) the smallest label printed at the asked scale needs beside
+  /// its edge. A seam's two sides each carry a label; cut where a side has less room, the label there
+  /// crosses a line, so such edges (tight_edges) are folded before every edge with room on both sides,
+  /// whatever `prefer` says, which decides among edges alike. 0 (the scale is not known): no edge is
+  /// tight. At large print sizes no edge is: nothing changes.
+  double label_room = 0;
+  /// Edges at least this long (model units) carry the label of a side without room on that side's glue
+  /// tab; 0: labels never sit on tabs.
+  double label_tab_length = 0;
 };
+
+/// Per edge, the size s of the largest label, `label_aspect` times as wide as tall, that fits between
+/// the edge and the apex of each of its two triangles (L h / (L + aspect h), L the edge's length, h the
+/// height of the triangle above it; the smaller of the two sides). 0 on boundary edges.
+std::vector<double> edge_label_room(const Mesh& mesh, double label_aspect);
+
+/// How tight each edge is for its seam labels at options.label_room (all 0 when that is 0; 0 on boundary
+/// edges): 0 both sides have room, 1 one side has and the edge is long enough for the other side's label
+/// on a tab, 2 a cut there leaves some label without room. cut_weights lowers each step by the whole
+/// range of the weights, so tighter edges fold first.
+std::vector<char> tight_edges(const Mesh& mesh, const CutOptions& options);
 
 /// The weights `options` asks for: light edges are folded first, heavy ones cut.
 std::vector<double> cut_weights(const Mesh& mesh, const CutOptions& options);
