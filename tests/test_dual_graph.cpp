@@ -234,14 +234,16 @@ TEST(DualGraph, EdgesWithoutRoomForTheSmallestLabelAreFoldedBeforeEveryEdgeWithR
   const std::vector<double> room = edge_label_room(mesh, 3);
   CutOptions cuts;
   cuts.label_room = median(room);
-  const std::vector<char> tight = tight_edges(mesh, cuts);
+  const std::vector<LabelFit> tight = tight_edges(mesh, cuts);
   const std::vector<double> w = cut_weights(mesh, cuts), by_length = min_perimeter_weights(mesh);
   double heaviest_tight = -1e9, lightest_roomy = 1e9;
   int tight_count = 0;
   for (int e = 0; e < mesh.num_edges(); ++e) {
     // Without tabs (label_tab_length 0) an edge is tight, 2, when either side lacks room.
-    EXPECT_EQ(tight[e], !mesh.edges[e].boundary() && room[e] < cuts.label_room ? 2 : 0) << "edge " << e;
-    if (tight[e]) {
+    EXPECT_EQ(tight[e],
+              !mesh.edges[e].boundary() && room[e] < cuts.label_room ? LabelFit::Tight : LabelFit::BothSides)
+        << "edge " << e;
+    if (tight[e] != LabelFit::BothSides) {
       ++tight_count;
       heaviest_tight = std::max(heaviest_tight, w[e]);
     } else {
@@ -255,7 +257,7 @@ TEST(DualGraph, EdgesWithoutRoomForTheSmallestLabelAreFoldedBeforeEveryEdgeWithR
   auto tight_cuts = [&](const EdgeStates& s) {
     int n = 0;
     for (int e = 0; e < mesh.num_edges(); ++e)
-      n += tight[e] && is_cut(s, e) ? 1 : 0;
+      n += tight[e] != LabelFit::BothSides && is_cut(s, e) ? 1 : 0;
     return n;
   };
   const EdgeStates with_room = spanning_forest(mesh, w), shortest = spanning_forest(mesh, by_length);
@@ -273,8 +275,9 @@ TEST(DualGraph, WithoutALabelRoomOrAtALargePrintNoEdgeIsTightAndTheWeightsStay) 
   for (double label_room : {0.0, 0.5 * least}) {
     CutOptions cuts;
     cuts.label_room = label_room;
-    const std::vector<char> tight = tight_edges(mesh, cuts);
-    EXPECT_EQ(std::count(tight.begin(), tight.end(), 1), 0) << "label room " << label_room;
+    const std::vector<LabelFit> tight = tight_edges(mesh, cuts);
+    EXPECT_EQ(std::count(tight.begin(), tight.end(), LabelFit::BothSides), mesh.num_edges())
+        << "label room " << label_room;
     EXPECT_EQ(cut_weights(mesh, cuts), min_perimeter_weights(mesh)) << "label room " << label_room;
   }
 }
@@ -285,14 +288,14 @@ TEST(DualGraph, AnEdgeLongEnoughForATabLabelIsLessTightWhenOneSideHasRoom) {
   no_tabs.label_room = median(edge_label_room(mesh, 3));
   CutOptions tabs = no_tabs;
   tabs.label_tab_length = 1e-9;  // every edge takes a tab label
-  const std::vector<char> without = tight_edges(mesh, no_tabs), with = tight_edges(mesh, tabs);
+  const std::vector<LabelFit> without = tight_edges(mesh, no_tabs), with = tight_edges(mesh, tabs);
   const std::vector<double> w = cut_weights(mesh, tabs);
   int one_side = 0;
   for (int e = 0; e < mesh.num_edges(); ++e) {
     EXPECT_LE(with[e], without[e]) << "edge " << e;
-    if (with[e] == 1) {
+    if (with[e] == LabelFit::OnTab) {
       ++one_side;
-      EXPECT_EQ(without[e], 2);
+      EXPECT_EQ(without[e], LabelFit::Tight);
       EXPECT_LT(w[e], 0);   // below every edge with room on both sides
       EXPECT_GE(w[e], -1);  // above every edge where no label fits
     }

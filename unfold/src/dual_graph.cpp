@@ -67,8 +67,8 @@ std::vector<double> edge_label_room(const Mesh& mesh, double label_aspect) {
   return room;
 }
 
-std::vector<char> tight_edges(const Mesh& mesh, const CutOptions& options) {
-  std::vector<char> tight(mesh.num_edges(), 0);
+std::vector<LabelFit> tight_edges(const Mesh& mesh, const CutOptions& options) {
+  std::vector<LabelFit> tight(mesh.num_edges(), LabelFit::BothSides);
   if (!(options.label_room > 0)) return tight;
   const double aspect = std::max(options.label_aspect, 0.0);
   for (int e = 0; e < mesh.num_edges(); ++e) {
@@ -80,7 +80,7 @@ std::vector<char> tight_edges(const Mesh& mesh, const CutOptions& options) {
       for (int f : edge.face)
         sides += side_room(mesh, f, length, aspect) >= options.label_room ? 1 : 0;
     const bool on_tab = options.label_tab_length > 0 && length >= options.label_tab_length;
-    tight[e] = sides == 2 ? 0 : (sides == 1 && on_tab ? 1 : 2);
+    tight[e] = sides == 2 ? LabelFit::BothSides : (sides == 1 && on_tab ? LabelFit::OnTab : LabelFit::Tight);
   }
   return tight;
 }
@@ -135,9 +135,9 @@ constexpr double kTightWeightStep = 1;
 
 std::vector<double> cut_weights(const Mesh& mesh, const CutOptions& options) {
   std::vector<double> weight = preferred_weights(mesh, options);
-  const std::vector<char> tight = tight_edges(mesh, options);
+  const std::vector<LabelFit> tight = tight_edges(mesh, options);
   for (int e = 0; e < mesh.num_edges(); ++e)
-    weight[e] -= kTightWeightStep * tight[e];
+    weight[e] -= kTightWeightStep * static_cast<int>(tight[e]);
   return weight;
 }
 

@@ -59,11 +59,16 @@ struct CutOptions {
 /// height of the triangle above it; the smaller of the two sides). 0 on boundary edges.
 std::vector<double> edge_label_room(const Mesh& mesh, double label_aspect);
 
-/// How tight each edge is for its seam labels at options.label_room (all 0 when that is 0; 0 on boundary
-/// edges): 0 both sides have room, 1 one side has and the edge is long enough for the other side's label
-/// on a tab, 2 a cut there leaves some label without room. cut_weights lowers each step by the whole
-/// range of the weights, so tighter edges fold first.
-std::vector<char> tight_edges(const Mesh& mesh, const CutOptions& options);
+/// How well a seam's two labels would fit if an edge were cut, tightest last: cut_weights lowers each
+/// step by the whole range of the weights, so tighter edges fold first.
+enum class LabelFit : unsigned char {
+  BothSides,  ///< both faces have room beside the edge (and every edge when label_room is 0, boundaries)
+  OnTab,      ///< one face has; the edge is long enough for the other side's label on its glue tab
+  Tight,      ///< a cut there leaves some label without room
+};
+
+/// LabelFit of each edge at options.label_room.
+std::vector<LabelFit> tight_edges(const Mesh& mesh, const CutOptions& options);
 
 /// The weights `options` asks for: light edges are folded first, heavy ones cut.
 std::vector<double> cut_weights(const Mesh& mesh, const CutOptions& options);
