@@ -19,6 +19,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "json_report.hpp"
+#include "print_cuts.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -104,9 +105,6 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
     return;  // not a usable mesh: the loader has its own tests
   }
   if (loaded.mesh.num_faces() < a.min_faces || loaded.mesh.num_faces() > a.max_faces) return;
-  unfold::UnfoldOptions uo;
-  uo.time_limit_s = a.time_limit_s;
-  const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
   const std::string name =
       (file.parent_path().filename() == "lowpoly" ? "lowpoly/" : "") + file.filename().string();
   for (double size : a.sizes_mm) {
@@ -114,6 +112,11 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
     o.paper_mm = paper;
     o.size_mm = size;
     if (a.nest2d) o.pack.engine = layout::PackEngine::Nest2d;
+    // Unfolded per size, as `make` unfolds: the cuts depend on the print scale (print_cuts.hpp).
+    unfold::UnfoldOptions uo;
+    uo.time_limit_s = a.time_limit_s;
+    uo.cuts = cuts_for_print(loaded.mesh, o, uo.cuts);
+    const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
     Row row = run_one(loaded.mesh, unfolded.unfolding, o);
     row.mesh = name;
     row.faces = loaded.mesh.num_faces();

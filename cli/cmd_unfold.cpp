@@ -19,6 +19,7 @@
 #include "json_report.hpp"
 #include "output_paths.hpp"
 #include "pipeline.hpp"
+#include "print_cuts.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -63,7 +64,11 @@ void run_unfold(UnfoldArgs args) {
   finish_unfold_options(args.unfold);
   const layout::LayoutOptions layout_options = to_layout_options(args.layout);
   ProgressLine line(!args.quiet);
-  UnfoldRun run = load_and_unfold(args.mesh, args.unfold, line);
+  // The cuts of the parts `make` would print at this size (choose_and_note_parts below).
+  UnfoldRun run = load_and_unfold(args.mesh, args.unfold, line,
+                                  [&](const unfold::LoadedMesh& loaded, unfold::UnfoldOptions& o) {
+                                    o.cuts = cuts_for_print(loaded.mesh, layout_options, o.cuts);
+                                  });
   choose_and_note_parts(run.loaded.mesh, run.result, layout_options);
   line.clear();
   const unfold::Unfolding& u = run.result.unfolding;

@@ -20,6 +20,8 @@ double surface_area(const unfold::Mesh& mesh) {
   return area;
 }
 
+}  // namespace
+
 double largest_dimension(const unfold::Mesh& mesh) {
   Vec3 lo = mesh.vertices.front(), hi = lo;
   for (const Vec3& p : mesh.vertices) {
@@ -28,8 +30,6 @@ double largest_dimension(const unfold::Mesh& mesh) {
   }
   return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
 }
-
-}  // namespace
 
 // Rounded as the renderer rounds (render_cairo.cpp).
 void check_png_raster(Vec2 paper_mm, double dpi) {

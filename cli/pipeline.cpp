@@ -8,6 +8,7 @@
 #include "choose_parts.hpp"
 #include "foldkit/error.hpp"
 #include "limits.hpp"
+#include "print_cuts.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -45,9 +46,11 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   layout_options.deadline = deadline;
 
   PipelineRun run;
-  run.unfolded = load_and_unfold(mesh_file, unfold_share, line, [&](const unfold::LoadedMesh& loaded) {
-    check_sheet_budget(loaded.mesh, layout_options);
-  });
+  run.unfolded = load_and_unfold(mesh_file, unfold_share, line,
+                                 [&](const unfold::LoadedMesh& loaded, unfold::UnfoldOptions& options) {
+                                   check_sheet_budget(loaded.mesh, layout_options);
+                                   options.cuts = cuts_for_print(loaded.mesh, layout_options, options.cuts);
+                                 });
   const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
   // Bleed needs its share of the spacing between pieces.
   if (coloured)

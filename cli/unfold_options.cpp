@@ -106,11 +106,12 @@ unfold::SeamConstraints seams_of(const unfold::LoadedMesh& loaded, const std::st
 }  // namespace
 
 UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line,
-                          const std::function<void(const unfold::LoadedMesh&)>& check_loaded) {
+                          const PrepareUnfold& prepare) {
   UnfoldRun run;
   line.update("loading " + mesh_file);
   run.loaded = unfold::load_mesh(mesh_file, options.load);
-  if (check_loaded) check_loaded(run.loaded);
+  unfold::UnfoldOptions unfold_options = options.unfold;
+  if (prepare) prepare(run.loaded, unfold_options);
   auto report = [&line](const unfold::UnfoldProgress& p) {
     char text[160];
     char pieces[32] = "";  // not known between stages
@@ -121,7 +122,6 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
     line.update(text);
     return true;
   };
-  unfold::UnfoldOptions unfold_options = options.unfold;
   unfold_options.seams = seams_of(run.loaded, mesh_file, options, run.loaded.notes);
   try {
     run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);

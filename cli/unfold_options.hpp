@@ -43,8 +43,10 @@ struct UnfoldRun {
   unfold::LoadedMesh loaded;
   unfold::UnfoldResult result;
 };
-/// `check_loaded` runs between loading and unfolding (e.g. to refuse a size before any work).
+/// `prepare` runs between loading and unfolding: it may refuse (e.g. a size before any work) or fit the
+/// unfold options to the loaded mesh (e.g. the cuts to the print scale, print_cuts.hpp).
+using PrepareUnfold = std::function<void(const unfold::LoadedMesh&, unfold::UnfoldOptions&)>;
 UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& options, ProgressLine& line,
-                          const std::function<void(const unfold::LoadedMesh&)>& check_loaded = {});
+                          const PrepareUnfold& prepare = {});
 
 }  // namespace foldkit::cli

@@ -185,3 +185,45 @@ TEST(Search, ItsOwnOptionsReachItThroughUnfoldMesh) {
   }));
   EXPECT_EQ(check_unfolding(mesh, r.unfolding), std::vector<std::string>{});
 }
+
+TEST(Search, TreesKeptForLabelRoomNeverCostAPiece) {
+  // fish_350's first tree overlaps. With no time for the trees that fold edges too tight for labels, the
+  // search falls back to the weights without label room and still reaches one piece.
+  const Mesh mesh = load("fish_350.obj");
+  UnfoldOptions options;
+  options.method = Method::Search;
+  options.time_limit_s = 20;
+  std::vector<double> room = edge_label_room(mesh, 3);
+  std::nth_element(room.begin(), room.begin() + room.size() / 2, room.end());
+  options.cuts.label_room = room[room.size() / 2];
+  options.label_room_most_s = 0;
+  const UnfoldResult r = unfold_mesh(mesh, options);
+  EXPECT_EQ(r.unfolding.piece_count, 1);
+  EXPECT_EQ(check_unfolding(mesh, r.unfolding), std::vector<std::string>{});
+}
+
+TEST(Search, TiesBetweenMovesGoToTheCutsTheWeightsPrefer) {
+  // Same mesh, seed and start; the walk that breaks ties by weight ends with heavier cuts on average.
+  const Mesh mesh = load("fish_350.obj");
+  const UnfoldContext ctx = make_context(mesh, {SeamPreference::Roomy, 3, 1});
+  auto mean_cut_weight = [&](const EdgeStates& s) {
+    double sum = 0;
+    int n = 0;
+    for (EdgeId e : all_ids<EdgeId>(mesh.num_edges()))
+      if (s[e] == EdgeState::Cut && !mesh.edge(e).boundary()) {
+        sum += ctx.weight[e.index()];
+        ++n;
+      }
+    return sum / n;
+  };
+  SearchOptions opt;
+  opt.seed = 5;
+  opt.prefer_weighted_ties = false;
+  const SearchResult plain = search_unfold(ctx, mst_folds(ctx), opt);
+  opt.prefer_weighted_ties = true;
+  const SearchResult ties = search_unfold(ctx, mst_folds(ctx), opt);
+  ASSERT_TRUE(plain.solved);
+  ASSERT_TRUE(ties.solved);
+  EXPECT_EQ(check_unfolding(mesh, flatten(mesh, ties.edges)), std::vector<std::string>{});
+  EXPECT_GT(mean_cut_weight(ties.edges), mean_cut_weight(plain.edges));
+}

@@ -12,7 +12,7 @@
 
 namespace foldkit::unfold {
 
-UnfoldContext make_context(const Mesh& mesh) {
+UnfoldContext make_context(const Mesh& mesh, const CutOptions& cuts) {
   UnfoldContext ctx;
   ctx.mesh = &mesh;
   const int nf = mesh.num_faces();
@@ -42,7 +42,7 @@ UnfoldContext make_context(const Mesh& mesh) {
         break;
     }
   }
-  ctx.weight = min_perimeter_weights(mesh);
+  ctx.weight = cut_weights(mesh, cuts);
   ctx.eps = 0.5 * overlap_tolerance(ctx.canonical);
   ctx.cell_size = suggested_cell_size(ctx.canonical);
   return ctx;

@@ -72,8 +72,8 @@ Unfolding cut_until_no_overlap(const Mesh& mesh, EdgeStates& state, const std::v
     for (const FacePair& pair : pairs) {
       std::vector<EdgeId> path = fold_path(forest, pair.a, pair.b);
       if (std::any_of(path.begin(), path.end(), [&](EdgeId e) { return cut_this_round[e] != 0; })) continue;
-      // Prefer the middle of the path (both sides keep a fair share of faces), then the shortest edge
-      // there (largest minimum-perimeter weight), so seams stay short.
+      // Prefer the middle of the path (both sides keep a fair share of faces), then the edge of largest
+      // weight there, the cut the weights prefer (the shortest, or the roomiest).
       const std::size_t n = path.size();
       EdgeId best;
       for (int pass = 0; pass < 2 && !best.valid(); ++pass) {
@@ -96,8 +96,8 @@ Unfolding cut_until_no_overlap(const Mesh& mesh, EdgeStates& state, const std::v
   }
 }
 
-Unfolding unfold_mst(const Mesh& mesh, const EdgeConstraints& constraints) {
-  std::vector<double> weight = min_perimeter_weights(mesh);
+Unfolding unfold_mst(const Mesh& mesh, const EdgeConstraints& constraints, const CutOptions& cuts) {
+  std::vector<double> weight = cut_weights(mesh, cuts);
   EdgeStates state = spanning_forest(mesh, weight, constraints);
   return cut_until_no_overlap(mesh, state, weight, constraints);
 }

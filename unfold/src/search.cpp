@@ -2,7 +2,7 @@
 // re-attach edge of the cut-off side) moves, and applies the one that lowers the overlap count most
 // (or keeps it, to walk plateaus). Only the moved side is re-tested (CutTree::reattach_cost), which is
 // what keeps steps cheap at thousands of faces. A short tabu list stops the walk from undoing itself;
-// a restart from a perturbed minimum-perimeter tree leaves regions where it stalls.
+// a restart from a tree of perturbed cut weights leaves regions where it stalls.
 #include "foldkit/unfold/search.hpp"
 
 #include <algorithm>
@@ -44,8 +44,8 @@ constexpr int kCheckpointSteps = 16;
 constexpr double kReportInterval_s = 0.2;
 // The overlap change a kick starts from: larger than any move can add, so the least bad candidate wins.
 constexpr int kAnyDelta = 1 << 20;
-// Largest noise added to a minimum-perimeter weight (weights lie in [0, 1]) for a fresh tree: reorders
-// edges of similar length, keeps the long ones early.
+// Largest noise added to a cut weight (weights lie in [0, 1]) for a fresh tree: reorders
+// edges of similar weight, keeps the order of the clearly lighter and heavier ones.
 constexpr double kRestartWeightNoise = 0.3;
 // The first rounds are this fraction of `round_steps`, doubling up to it: small meshes finish at once.
 constexpr int kFirstRoundDivisor = 8;
@@ -147,7 +147,8 @@ class Walker {
   }
 
   // Moves cutting e: tries up to attach_tries re-attach edges of its smaller side; keeps in `best` the
-  // first that changes the overlap count by less than `best_delta` (which it lowers).
+  // first that changes the overlap count by less than `best_delta` (which it lowers) or, with
+  // prefer_weighted_ties, by as much as `best` but trading a lighter cut for a heavier one.
   void try_cut(EdgeId e, int& best_delta, Move& best) {
     if (tabu(e) || cons_.fold(e)) return;
     tree_.smaller_side(e, side_);
@@ -158,7 +159,9 @@ class Walker {
     for (int t = 0; t < tries; ++t) {
       const EdgeId a = (t == 0 && opt_.near_first && !near_.empty()) ? near_[uniform(rng_, near_.size())]
                                                                      : attach_[uniform(rng_, attach_.size())];
-      const int limit = old + best_delta - 1;
+      const bool ties =
+          opt_.prefer_weighted_ties && best.cut.valid() && gain(e, a) > gain(best.cut, best.attach);
+      const int limit = old + best_delta - (ties ? 0 : 1);
       if (limit < 0) break;
       int cost = tree_.reattach_cost(side_, a, limit);
       if (cost <= limit) {
@@ -167,6 +170,9 @@ class Walker {
       }
     }
   }
+
+  // What a move gains in the weights' eyes: cutting e (heavy: a preferred cut) and folding a (light).
+  double gain(EdgeId e, EdgeId a) const { return ctx_.weight[e.index()] - ctx_.weight[a.index()]; }
 
   // attach_: the cut edges from side_ (the smaller side of e) to the rest of its piece that may fold;
   // near_: those of them sharing a vertex with e.
@@ -226,7 +232,7 @@ class Walker {
     ++restarts_;
   }
 
-  // A fresh tree from perturbed minimum-perimeter weights: close to the good trees, but different
+  // A fresh tree from perturbed cut weights: close to the good trees, but different
   // enough to leave a region the walk keeps returning to. It starts a new episode: its descent is not
   // cut short by kicks back to the old best tree.
   void fresh_tree() {

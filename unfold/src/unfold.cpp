@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "foldkit/error.hpp"
@@ -38,6 +39,47 @@ EdgeStates without_slits(const UnfoldContext& ctx, const EdgeStates& edges,
   return r.moves > 0 ? tree.states() : edges;
 }
 
+// Trees that fold every edge too tight for a label (CutOptions::label_room) are spindlier: on a few meshes
+// the search cannot untangle them into one piece where it untangles minimum-perimeter trees, so they get
+// a share of the time only (UnfoldOptions::label_room_share).
+struct SearchRun {
+  UnfoldContext ctx;
+  SearchResult result;
+};
+
+SearchRun run_search(const Mesh& mesh, const CutOptions& cuts, const EdgeConstraints& constraints,
+                     const UnfoldOptions& options, double time_limit_s, const ProgressFn& progress) {
+  SearchRun run{make_context(mesh, cuts), {}};
+  SearchOptions so = options.search;
+  so.seed = options.seed;
+  so.threads = options.threads;
+  so.time_limit_s = time_limit_s;
+  so.constraints = constraints;
+  run.result = search_unfold(run.ctx, spanning_forest(mesh, run.ctx.weight, constraints), so, progress);
+  return run;
+}
+
+SearchRun search_with_label_room(const Mesh& mesh, const EdgeConstraints& constraints,
+                                 const UnfoldOptions& options, const ProgressFn& progress,
+                                 const std::function<double()>& elapsed) {
+  if (!(options.cuts.label_room > 0))
+    return run_search(mesh, options.cuts, constraints, options, options.time_limit_s, progress);
+  const double share = std::min(options.label_room_share * options.time_limit_s, options.label_room_most_s);
+  SearchRun roomy = run_search(mesh, options.cuts, constraints, options, share, progress);
+  if (roomy.result.solved) return roomy;
+  CutOptions plain = options.cuts;
+  plain.label_room = 0;
+  plain.label_tab_length = 0;
+  SearchRun fallback =
+      run_search(mesh, plain, constraints, options, options.time_limit_s - elapsed(), progress);
+  // A forest's cut edges are E - F + pieces: fewer cuts, fewer pieces.
+  const auto pieces = [&](const SearchRun& run) {
+    return std::count(run.result.edges.begin(), run.result.edges.end(), EdgeState::Cut);
+  };
+  if (fallback.result.solved || pieces(fallback) < pieces(roomy)) return fallback;
+  return roomy;
+}
+
 }  // namespace
 
 UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const ProgressFn& progress) {
@@ -54,17 +96,13 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
   switch (options.method) {
     case Method::Mst:
       if (progress) progress({"mst", 0, 0, 0, elapsed()});
-      result.unfolding = unfold_mst(mesh, constraints);
+      result.unfolding = unfold_mst(mesh, constraints, options.cuts);
       result.method = "mst";
       break;
     case Method::Search: {
-      const UnfoldContext ctx = make_context(mesh);
-      SearchOptions so = options.search;
-      so.seed = options.seed;
-      so.threads = options.threads;
-      so.time_limit_s = options.time_limit_s;
-      so.constraints = constraints;
-      const SearchResult r = search_unfold(ctx, spanning_forest(mesh, ctx.weight, constraints), so, progress);
+      const SearchRun run = search_with_label_room(mesh, constraints, options, progress, elapsed);
+      const UnfoldContext& ctx = run.ctx;
+      const SearchResult& r = run.result;
       if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
       result.unfolding = flatten(mesh, without_slits(ctx, r.edges, constraints, options,
                                                      options.time_limit_s - elapsed(), progress, elapsed()));
@@ -76,7 +114,7 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       break;
     }
     case Method::Ga: {
-      const UnfoldContext ctx = make_context(mesh);
+      const UnfoldContext ctx = make_context(mesh, options.cuts);
       GaOptions go = options.ga;
       go.seed = options.seed;
       go.time_limit_s = options.time_limit_s;

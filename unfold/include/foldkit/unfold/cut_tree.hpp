@@ -9,6 +9,7 @@
 
 #include "foldkit/geom/predicates.hpp"
 #include "foldkit/geom/rigid.hpp"
+#include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/edge_state.hpp"
 #include "foldkit/unfold/ids.hpp"
 #include "foldkit/unfold/mesh.hpp"
@@ -24,7 +25,7 @@ struct UnfoldContext {
   /// Cut edges each vertex needs to avoid a local overlap (the seed's curvature rule): 2 at a
   /// hyperbolic vertex, 1 at an elliptic or flat one, 0 on an open boundary.
   std::vector<int> required_cuts;
-  /// Minimum-perimeter weight per edge (min_perimeter_weights): long edges are light and folded first.
+  /// Cut weight per edge (cut_weights): light edges are folded first, heavy ones are the cuts preferred.
   std::vector<double> weight;
   /// Overlap depth tolerance (model units; half of overlap_tolerance, so that whatever the final
   /// whole-unfolding check calls an overlap the search has seen too) and grid cell size.
@@ -32,8 +33,8 @@ struct UnfoldContext {
   double cell_size = 1;
 };
 
-/// Builds the shared context of `mesh` (which must outlive it).
-UnfoldContext make_context(const Mesh& mesh);
+/// Builds the shared context of `mesh` (which must outlive it), its weights from `cuts`.
+UnfoldContext make_context(const Mesh& mesh, const CutOptions& cuts = {});
 
 /// The incremental unfolding state. A value type: copying it gives an independent state.
 class CutTree {

@@ -34,6 +34,9 @@ struct SearchOptions {
   bool near_first = true;
   /// How many overlapping pairs the best move of a step may add (0: never go uphill).
   int max_uphill = 1;
+  /// Of two candidate moves that change the overlap count alike, take the one whose cut is heavier and
+  /// whose re-attached edge lighter (UnfoldContext::weight): the walk drifts towards the preferred cuts.
+  bool prefer_weighted_ties = false;
   /// Independent walks (walk k uses seed + k), advanced in rounds of `round_steps` steps each; after a
   /// round the lowest-numbered walk that reached one piece wins. Their number, not `threads`, decides
   /// the result, so the same seed gives the same cuts whatever the thread count.

@@ -47,6 +47,13 @@ struct UnfoldOptions {
   /// no glue tab fits.
   bool close_slits = true;
   SlitOptions slits;
+  /// Which cuts every unfolder prefers where several trees unfold as well (dual_graph.hpp).
+  CutOptions cuts;
+  /// With cuts.label_room set, the search first gets this share of time_limit_s (at most
+  /// label_room_most_s) on the trees that keep seams where labels fit; where those leave overlaps, it
+  /// starts again without label room with the time left, and the result with fewer pieces is kept.
+  double label_room_share = 0.25;
+  double label_room_most_s = 5;
   SearchOptions search;  ///< `--method search` (portfolio, tabu tenure, ...)
   GaOptions ga;          ///< `--method ga` (population, fitness weights, ...)
 };
