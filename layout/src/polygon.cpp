@@ -42,6 +42,28 @@ std::vector<Polygon> from_clipper(const ClipperLib::Paths& paths) {
   return out;
 }
 
+// Whether c / |e| < inset (|e| > 0): a point's signed distance to an edge's line below the inset. Label
+// placement asks this many times per label; |e| (a hypot) is computed only where the answer depends on
+// it. The sign of the quotient is that of c, and its size against the inset is decided by squares with
+// a margin far above the rounding of either form; the exact form decides near the margin and for values
+// out of the safe range, so the answer is the same to the last bit.
+bool nearer_than(double c, Vec2 e, double inset) {
+  constexpr double kLow = 1e-100, kHigh = 1e100, kMargin = 1e-9;
+  const double len2 = e.x * e.x + e.y * e.y;
+  if (len2 >= kLow * kLow && len2 <= kHigh && std::isfinite(c) && std::isfinite(inset)) {
+    if (c >= 0 && inset <= 0) return false;
+    if (c < 0 && inset > 0) return true;
+    if (c <= -kLow && inset == 0) return true;
+    const double size = std::fabs(c), room = std::fabs(inset);
+    if ((c > 0) == (inset > 0) && size >= kLow && size <= kHigh && room >= kLow && room <= kHigh) {
+      const double c2 = c * c, bound2 = inset * inset * len2;
+      if (c2 > bound2 * (1 + kMargin)) return c < 0;  // farther from the line than the inset
+      if (c2 < bound2 * (1 - kMargin)) return c > 0;  // nearer to the line than the inset
+    }
+  }
+  return c / norm(e) < inset;
+}
+
 }  // namespace
 
 double signed_area(std::span<const Vec2> polygon) {
@@ -61,9 +83,8 @@ Box2 bounds_of(std::span<const Vec2> points) {
 bool inside_convex(std::span<const Vec2> polygon, Vec2 p, double inset) {
   for (std::size_t i = 0, n = polygon.size(); i < n; ++i) {
     Vec2 e = polygon[(i + 1) % n] - polygon[i];
-    double len = norm(e);
-    if (len == 0) continue;
-    if (cross(e, p - polygon[i]) / len < inset) return false;
+    if (e.x == 0 && e.y == 0) continue;  // |e| == 0
+    if (nearer_than(cross(e, p - polygon[i]), e, inset)) return false;
   }
   return true;
 }

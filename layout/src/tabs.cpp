@@ -7,6 +7,8 @@
 #include <numeric>
 #include <utility>
 
+#include "foldkit/layout/box_grid.hpp"
+
 namespace foldkit::layout {
 namespace {
 
@@ -80,10 +82,25 @@ struct EdgeCorners {
   double at_a_rad = 0, at_b_rad = 0;
 };
 
-// What one piece holds while tabs are planned: its triangles' boxes and the tabs placed so far (their
-// collision footprints), per outline edge whether it carries a tab.
+// A grid over a piece's triangles: a tab is tried many times (widths, slants, stretches of its edge), and
+// each try tests only the triangles near it, not all of a large part's.
+BoxGrid triangle_grid(const ScaledPiece& piece) {
+  Box2 region;
+  for (const Triangle2& t : piece.triangles_mm)
+    region.add(bounds(t));
+  // Cells of about a triangle's size: a few triangles per cell on an even mesh.
+  const double n = std::max<double>(1, static_cast<double>(piece.triangles_mm.size()));
+  const double cell_mm = region.empty() ? 1.0 : std::sqrt(region.width() * region.height() / n);
+  BoxGrid grid(region, cell_mm);
+  for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
+    grid.insert(static_cast<int>(k), bounds(piece.triangles_mm[k]));
+  return grid;
+}
+
+// What one piece holds while tabs are planned: its triangles (by a grid of their boxes) and the tabs
+// placed so far (their collision footprints), per outline edge whether it carries a tab.
 struct PieceState {
-  std::vector<Box2> triangle_box;
+  BoxGrid triangles{Box2{}, 1.0};
   std::vector<Polygon> tab_shapes;
   std::vector<Box2> tab_box;
   std::vector<int> tab_seam;               // the seam of each tab shape
@@ -106,8 +123,7 @@ class TabPlanner {
     plan_.tab_of_seam.resize(seams.size());
     settled_.assign(seams.size(), 0);
     for (std::size_t p = 0; p < pieces.size(); ++p) {
-      for (const Triangle2& t : pieces[p].triangles_mm)
-        state_[p].triangle_box.push_back(bounds(t));
+      state_[p].triangles = triangle_grid(pieces[p]);
       for (const OutlineLoop& loop : pieces[p].outline_mm) {
         state_[p].has_tab.emplace_back(loop.size(), 0);
         seam_at_[p].emplace_back(loop.size(), -1);
@@ -251,10 +267,9 @@ class TabPlanner {
     const Box2 box = bounds_of(shape);
     const ScaledPiece& piece = pieces_[p];
     const PieceState& ps = state_[p];
-    for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
-      if (box.overlaps(ps.triangle_box[k]) &&
-          convex_overlap(shape, piece.triangles_mm[k], kOverlapTolerance_mm))
-        return false;
+    const bool clear_of_triangles = ps.triangles.visit(
+        box, [&](int k) { return !convex_overlap(shape, piece.triangles_mm[k], kOverlapTolerance_mm); });
+    if (!clear_of_triangles) return false;
     for (std::size_t k = 0; k < ps.tab_shapes.size(); ++k)
       if (box.overlaps(ps.tab_box[k]) && convex_overlap(shape, ps.tab_shapes[k], kOverlapTolerance_mm))
         return false;

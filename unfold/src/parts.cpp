@@ -48,9 +48,10 @@ class Fitter {
 
  private:
   bool fits_at(const std::vector<Vec2>& points, double angle) const {
+    const Rotation turn(angle);
     Box2 box;
     for (Vec2 p : points)
-      box.add(rotated(p, angle));
+      box.add(turn(p));
     return box.width() * scale_ <= room_.x && box.height() * scale_ <= room_.y;
   }
 
@@ -154,16 +155,21 @@ int grow_parts(const Unfolding& u, const std::vector<int>& faces, const Units& u
   for (int f : faces)
     points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
   const double axis_angle = min_area_rect_angle(points);
+  const Rotation to_axis(axis_angle);
   Box2 box;
   for (Vec2 p : points)
-    box.add(rotated(p, axis_angle));
+    box.add(to_axis(p));
   const bool x_long = box.width() >= box.height();
-  auto along = [&](int f) {
-    const Vec2 c = rotated(centroid(u.flat[f]), axis_angle);
-    return x_long ? c.x : c.y;
-  };
   std::vector<int> sweep = faces;
-  if (round) std::stable_sort(sweep.begin(), sweep.end(), [&](int a, int b) { return along(a) < along(b); });
+  if (round) {
+    // Each face's place along the axis, computed once rather than in every comparison.
+    std::vector<double> along(u.num_faces());
+    for (int f : faces) {
+      const Vec2 c = to_axis(centroid(u.flat[f]));
+      along[f] = x_long ? c.x : c.y;
+    }
+    std::stable_sort(sweep.begin(), sweep.end(), [&](int a, int b) { return along[a] < along[b]; });
+  }
   long pushed = 0;  // tree growth: faces in the order they were reached
 
   int parts = 0;

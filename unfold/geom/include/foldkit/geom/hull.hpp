@@ -45,9 +45,10 @@ inline double min_area_rect_angle(std::span<const Vec2> points) {
     const Vec2 e = hull[(i + 1) % n] - hull[i];
     if (norm(e) == 0) continue;
     const double angle = -std::atan2(e.y, e.x);
+    const Rotation turn(angle);
     Box2 box;
     for (Vec2 p : hull)
-      box.add(rotated(p, angle));
+      box.add(turn(p));
     if (box.width() * box.height() < best_area - 1e-9) {
       best_area = box.width() * box.height();
       best_angle = angle;
@@ -70,9 +71,10 @@ inline RectFit fit_in_rect(std::span<const Vec2> points, Vec2 room) {
   const std::vector<Vec2> hull = convex_hull(std::vector<Vec2>(points.begin(), points.end()));
   RectFit best;
   auto consider = [&](double a) {
+    const Rotation turn(a);
     Box2 box;
     for (Vec2 p : hull)
-      box.add(rotated(p, a));
+      box.add(turn(p));
     const double w = std::max(box.width(), 1e-300), h = std::max(box.height(), 1e-300);
     const double s = std::min(room.x / w, room.y / h);
     if (s > best.scale) best = {s, a};

@@ -44,9 +44,16 @@ inline Vec2 normalized(Vec2 a) {
 constexpr Vec2 perp_ccw(Vec2 a) {
   return {-a.y, a.x};
 }
+/// A rotation by a fixed angle with its cosine and sine taken once: for rotating many points alike
+/// (the same result as rotated() to the last bit, without a sine and cosine per point).
+struct Rotation {
+  double c = 1, s = 0;
+  explicit Rotation(double radians) : c(std::cos(radians)), s(std::sin(radians)) {}
+  Vec2 operator()(Vec2 a) const { return {c * a.x - s * a.y, s * a.x + c * a.y}; }
+};
+
 inline Vec2 rotated(Vec2 a, double radians) {
-  double c = std::cos(radians), s = std::sin(radians);
-  return {c * a.x - s * a.y, s * a.x + c * a.y};
+  return Rotation(radians)(a);
 }
 
 /// A point or direction in model space (mesh units).
