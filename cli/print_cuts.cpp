@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "foldkit/layout/tabs.hpp"
 #include "limits.hpp"
 
 namespace foldkit::cli {
@@ -11,8 +11,6 @@ namespace {
 
 // Seam numbers run per part and pair of parts: at a few hundred faces most have two digits.
 constexpr double kTypicalDigits = 2;
-// The steepest end the tab planner gives a tab that carries a label (layout/src/tabs.cpp).
-constexpr double kSteepestTabEnd_rad = 5 * std::numbers::pi / 12;
 
 }  // namespace
 
@@ -32,7 +30,7 @@ unfold::CutOptions cuts_for_print(const unfold::Mesh& mesh, const layout::Layout
   // width_per_length of its edge) and its edge leaves the label's width between two steep ends.
   if (o.tabs && o.tab.width_per_length > 0) {
     const double tab_mm = std::max(height_mm / o.tab.width_per_length,
-                                   width_mm + 2 * height_mm / std::tan(kSteepestTabEnd_rad));
+                                   width_mm + 2 * height_mm / std::tan(layout::kSteepestTabSlant_rad));
     cuts.label_tab_length = tab_mm * extent / *o.size_mm;
   }
   return cuts;

@@ -24,7 +24,7 @@ constexpr double kOverlapTolerance_mm = 1e-9;
 constexpr double kCornerMargin_rad = 0.12;
 // Slants tried after options.max_slant_rad when a gentle slant leaves the tab too narrow: steeper, still
 // within the corner's share.
-constexpr std::array<double, 2> kSteeperSlants_rad{std::numbers::pi / 3, 5 * std::numbers::pi / 12};
+constexpr std::array<double, 2> kSteeperSlants_rad{std::numbers::pi / 3, kSteepestTabSlant_rad};
 // A tab narrowed by its slants to less than this share of the width asked counts as not fitting.
 constexpr double kKeptWidthShare = 0.95;
 // Each narrower try is this share of the previous width.

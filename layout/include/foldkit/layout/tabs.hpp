@@ -17,6 +17,10 @@
 
 namespace foldkit::layout {
 
+/// The steepest end (angle from the edge) a tab gets, where gentler ends would leave a short edge's tab
+/// too narrow; always within its corner's share of the free angle.
+inline constexpr double kSteepestTabSlant_rad = 5 * std::numbers::pi / 12;
+
 struct TabOptions {
   double width_mm = 5;      ///< full width, from the edge to the tab's outer side
   double min_width_mm = 2;  ///< narrower tabs are not worth gluing: try the other side or drop
