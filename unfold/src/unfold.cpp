@@ -17,25 +17,26 @@
 namespace foldkit::unfold {
 namespace {
 
-// The cuts `cut` with their slits closed where a move allows (slits.hpp).
-EdgeStates without_slits(const UnfoldContext& ctx, const EdgeStates& edges,
-                         const EdgeConstraints& constraints, const UnfoldOptions& options,
-                         double seconds_left, const ProgressFn& progress, double seconds_before) {
-  if (!options.close_slits) return edges;
+// The cuts `edges` with seams moved where a move allows (seam_moves.hpp): slits closed, and cuts off
+// edges too tight for their labels at the asked print scale. Bounded by work, not by the clock, so that
+// the result does not depend on how busy the machine is.
+EdgeStates with_seams_moved(const UnfoldContext& ctx, const EdgeStates& edges,
+                            const EdgeConstraints& constraints, const UnfoldOptions& options,
+                            const ProgressFn& progress, double seconds_before) {
+  if (!options.move_seams) return edges;
   CutTree tree(ctx, edges);
   if (tree.overlap_count() > 0) return edges;
-  SlitOptions so = options.slits;
-  so.time_limit_s = std::clamp(seconds_left, 0.0, so.time_limit_s);
+  SeamMoveOptions so = options.seam_moves;
   if (progress) {
     const auto start = std::chrono::steady_clock::now();
     so.progress = [&progress, start, seconds_before](long done, long total) {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const long percent = total > 0 ? 100 * done / total : 0;
-      progress({"closing slits " + std::to_string(percent) + "%", static_cast<int>(done), 0, 0,
+      progress({"moving seams " + std::to_string(percent) + "%", static_cast<int>(done), 0, 0,
                 seconds_before + s});
     };
   }
-  const SlitResult r = close_slits(tree, constraints, so);
+  const SeamMoveResult r = move_seams(tree, constraints, tight_edges(*ctx.mesh, options.cuts), so);
   return r.moves > 0 ? tree.states() : edges;
 }
 
@@ -103,9 +104,9 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       const SearchRun run = search_with_label_room(mesh, constraints, options, progress, elapsed);
       const UnfoldContext& ctx = run.ctx;
       const SearchResult& r = run.result;
-      if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
-      result.unfolding = flatten(mesh, without_slits(ctx, r.edges, constraints, options,
-                                                     options.time_limit_s - elapsed(), progress, elapsed()));
+      if (progress && options.move_seams) progress({"moving seams 0%", 0, 0, 0, elapsed()});
+      result.unfolding =
+          flatten(mesh, with_seams_moved(ctx, r.edges, constraints, options, progress, elapsed()));
       result.method = "search";
       result.iterations = r.steps;
       if (!r.solved)
@@ -121,9 +122,9 @@ UnfoldResult unfold_mesh(const Mesh& mesh, const UnfoldOptions& options, const P
       go.threads = options.threads;
       go.constraints = constraints;
       const GaResult r = genetic_unfold(ctx, go, progress);
-      if (progress && options.close_slits) progress({"closing slits 0%", 0, 0, 0, elapsed()});
-      result.unfolding = flatten(mesh, without_slits(ctx, r.edges, constraints, options,
-                                                     options.time_limit_s - elapsed(), progress, elapsed()));
+      if (progress && options.move_seams) progress({"moving seams 0%", 0, 0, 0, elapsed()});
+      result.unfolding =
+          flatten(mesh, with_seams_moved(ctx, r.edges, constraints, options, progress, elapsed()));
       result.method = r.method;
       result.iterations = r.generations;
       break;

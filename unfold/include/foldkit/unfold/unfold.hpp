@@ -10,8 +10,8 @@
 #include "foldkit/unfold/genetic.hpp"
 #include "foldkit/unfold/mesh.hpp"
 #include "foldkit/unfold/progress.hpp"
+#include "foldkit/unfold/seam_moves.hpp"
 #include "foldkit/unfold/search.hpp"
-#include "foldkit/unfold/slits.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
 namespace foldkit::unfold {
@@ -28,7 +28,7 @@ struct SeamConstraints {
   std::vector<std::array<int, 2>> forbid_cut;  ///< --keep FILE
 };
 
-/// The stage options nest: `search`, `ga` and `slits` are passed down whole. The run-wide `seed`,
+/// The stage options nest: `search`, `ga` and `seam_moves` are passed down whole. The run-wide `seed`,
 /// `time_limit_s` and `threads` (and the constraints resolved from `seams` and the flat faces) are the
 /// ones every stage gets: unfold_mesh sets them on the nested options, whatever those hold.
 struct UnfoldOptions {
@@ -44,9 +44,10 @@ struct UnfoldOptions {
   /// flat face that is never cut (see flat_faces.hpp).
   double flat_angle_rad = kDefaultFlatAngleRad;
   /// After the search or the GA, move cuts away from leaves at nearly flat vertices (slits.hpp), where
-  /// no glue tab fits.
-  bool close_slits = true;
-  SlitOptions slits;
+  /// no glue tab fits, and, with cuts.label_room set, off edges too tight for their labels
+  /// (seam_moves.hpp).
+  bool move_seams = true;
+  SeamMoveOptions seam_moves;
   /// Which cuts every unfolder prefers where several trees unfold as well (dual_graph.hpp).
   CutOptions cuts;
   /// With cuts.label_room set, the search first gets this share of time_limit_s (at most
