@@ -187,7 +187,7 @@ TEST(Search, ItsOwnOptionsReachItThroughUnfoldMesh) {
 }
 
 TEST(Search, TreesKeptForLabelRoomNeverCostAPiece) {
-  // fish_350's first tree overlaps. With no time for the trees that fold edges too tight for labels, the
+  // fish_350's first tree overlaps. With one step for the trees that fold edges too tight for labels, the
   // search falls back to the weights without label room and still reaches one piece.
   const Mesh mesh = load("fish_350.obj");
   UnfoldOptions options;
@@ -196,7 +196,7 @@ TEST(Search, TreesKeptForLabelRoomNeverCostAPiece) {
   std::vector<double> room = edge_label_room(mesh, 3);
   std::nth_element(room.begin(), room.begin() + room.size() / 2, room.end());
   options.cuts.label_room = room[room.size() / 2];
-  options.label_room_most_s = 0;
+  options.label_room_most_steps = 1;
   const UnfoldResult r = unfold_mesh(mesh, options);
   EXPECT_EQ(r.unfolding.piece_count, 1);
   EXPECT_EQ(check_unfolding(mesh, r.unfolding), std::vector<std::string>{});

@@ -294,7 +294,7 @@ class Portfolio {
   /// seed + k; the others are built in parallel (the initial overlap test is a full pass over the mesh).
   void start(const EdgeStates& initial) {
     walkers_[0] = std::make_unique<Walker>(ctx_, initial, opt_, opt_.seed);
-    walkers_[0]->run(opt_.round_steps, [this] { return should_stop(); });
+    walkers_[0]->run(steps_left(0, opt_.round_steps), [this] { return should_stop(); });
     if (walkers_[0]->solved()) return;
     run_parallel(size(), threads_, [&](int k) {
       if (k > 0) walkers_[k] = std::make_unique<Walker>(ctx_, initial, opt_, opt_.seed + k);
@@ -311,12 +311,13 @@ class Portfolio {
         if (walkers_[k]->solved()) return k;
       if (timed_out_.load() || stop_.load()) return -1;
       if (elapsed() >= opt_.time_limit_s) return -1;
+      if (out_of_steps()) return -1;
       report();
       if (stop_.load()) return -1;
       const int budget = round_steps;
       round_steps = std::min(opt_.round_steps, round_steps * 2);
       run_parallel(size(), threads_,
-                   [&](int k) { walkers_[k]->run(budget, [this] { return should_stop(); }); });
+                   [&](int k) { walkers_[k]->run(steps_left(k, budget), [this] { return should_stop(); }); });
     }
   }
 
@@ -351,6 +352,19 @@ class Portfolio {
   using Clock = std::chrono::steady_clock;
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  // SearchOptions::max_steps: counted per walk and checked between rounds only, so where it stops the
+  // search does not depend on the clock or the thread count.
+  int steps_left(int k, int budget) const {
+    if (opt_.max_steps <= 0) return budget;
+    return static_cast<int>(std::clamp<long>(opt_.max_steps - walkers_[k]->steps(), 0, budget));
+  }
+  bool out_of_steps() const {
+    if (opt_.max_steps <= 0) return false;
+    for (int k = 0; k < size(); ++k)
+      if (walkers_[k] && walkers_[k]->steps() < opt_.max_steps) return false;
+    return true;
+  }
 
   // Asked by every walk at its checkpoints: true once cancelled or out of time. On the calling thread it
   // reports progress first, so reports come from inside rounds too.

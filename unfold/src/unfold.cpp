@@ -42,19 +42,21 @@ EdgeStates with_seams_moved(const UnfoldContext& ctx, const EdgeStates& edges,
 
 // Trees that fold every edge too tight for a label (CutOptions::label_room) are spindlier: on a few meshes
 // the search cannot untangle them into one piece where it untangles minimum-perimeter trees, so they get
-// a share of the time only (UnfoldOptions::label_room_share).
+// a budget of steps only (UnfoldOptions::label_room_most_steps).
 struct SearchRun {
   UnfoldContext ctx;
   SearchResult result;
 };
 
 SearchRun run_search(const Mesh& mesh, const CutOptions& cuts, const EdgeConstraints& constraints,
-                     const UnfoldOptions& options, double time_limit_s, const ProgressFn& progress) {
+                     const UnfoldOptions& options, double time_limit_s, const ProgressFn& progress,
+                     long max_steps = 0) {
   SearchRun run{make_context(mesh, cuts), {}};
   SearchOptions so = options.search;
   so.seed = options.seed;
   so.threads = options.threads;
   so.time_limit_s = time_limit_s;
+  so.max_steps = max_steps;
   so.constraints = constraints;
   run.result = search_unfold(run.ctx, spanning_forest(mesh, run.ctx.weight, constraints), so, progress);
   return run;
@@ -65,8 +67,9 @@ SearchRun search_with_label_room(const Mesh& mesh, const EdgeConstraints& constr
                                  const std::function<double()>& elapsed) {
   if (!(options.cuts.label_room > 0))
     return run_search(mesh, options.cuts, constraints, options, options.time_limit_s, progress);
-  const double share = std::min(options.label_room_share * options.time_limit_s, options.label_room_most_s);
-  SearchRun roomy = run_search(mesh, options.cuts, constraints, options, share, progress);
+  SearchRun roomy =
+      run_search(mesh, options.cuts, constraints, options, options.label_room_share * options.time_limit_s,
+                 progress, std::max(options.label_room_most_steps, 1L));
   if (roomy.result.solved) return roomy;
   CutOptions plain = options.cuts;
   plain.label_room = 0;

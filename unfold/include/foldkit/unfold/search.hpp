@@ -16,6 +16,9 @@ namespace foldkit::unfold {
 struct SearchOptions {
   std::uint64_t seed = 1;
   double time_limit_s = 60;
+  /// Steps per walk after which the search stops as if out of time (0: no such limit). Unlike the time
+  /// limit, where it stops is the same on a busy machine and an idle one.
+  long max_steps = 0;
   /// Candidate (cut, re-attach) moves evaluated per step; the best that does not add overlaps is kept.
   int candidates_per_move = 6;
   /// Moves without a new best overlap count before restarting from a freshly perturbed tree.
@@ -65,10 +68,10 @@ struct SearchResult {
 
 /// Runs the search from the fold forest `initial` (pieces of one component are first stitched
 /// into one tree along their lightest edges), as a portfolio of walks on up to `threads` threads.
-/// Deterministic for a given seed, whatever the thread count, unless stopped by the time limit or by
-/// `progress` returning false. `progress` is called from the calling thread only, at most every 0.2 s
-/// (the first time before any step), inside rounds as well as between them; once it returns false every
-/// walk stops within a few steps and is not asked again.
+/// Deterministic for a given seed, whatever the thread count (max_steps included), unless stopped by the
+/// time limit or by `progress` returning false. `progress` is called from the calling thread only, at most
+/// every 0.2 s (the first time before any step), inside rounds as well as between them; once it returns false
+/// every walk stops within a few steps and is not asked again.
 SearchResult search_unfold(const UnfoldContext& context, const EdgeStates& initial,
                            const SearchOptions& options, const ProgressFn& progress = {});
 
