@@ -96,6 +96,26 @@ TEST(Search, OutOfTimeTheBestTreeIsCutApartIntoAValidUnfolding) {
   EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
 }
 
+TEST(Search, AStepBudgetStopsEveryWalkAtTheSameTreeWhateverTheThreads) {
+  // fish_350's spanning tree overlaps and is not untangled in 3 steps: every walk stops at its budget,
+  // and the best tree, cut apart, is the same on one thread as on two.
+  const Mesh mesh = load("fish_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  SearchOptions opt;
+  opt.portfolio = 2;
+  opt.max_steps = 3;
+  opt.threads = 1;
+  const SearchResult one = search_unfold(ctx, mst_folds(ctx), opt);
+  opt.threads = 2;
+  const SearchResult two = search_unfold(ctx, mst_folds(ctx), opt);
+  EXPECT_FALSE(one.solved);
+  EXPECT_EQ(one.steps, 2 * 3);
+  EXPECT_TRUE(one.edges == two.edges);
+  EXPECT_EQ(one.steps, two.steps);
+  const Unfolding u = flatten(mesh, one.edges);
+  EXPECT_EQ(check_unfolding(mesh, u), std::vector<std::string>{}) << joined(check_unfolding(mesh, u));
+}
+
 TEST(Search, ACancelledSearchStopsAtOnceAndStillReturnsAValidUnfolding) {
   // fish_350's spanning tree overlaps (see above): cancelled before its first step, the search is not solved.
   const Mesh mesh = load("fish_350.obj");
