@@ -247,7 +247,7 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long b
     int tiles;  ///< > 0: parts grown into one tile of the sheet cut in this many (fraction unused)
   };
   // Halves of the sheet (two such parts share one) after the fractions: over `bench --layout` the same
-  // sheets and fewer parts on 19 runs, more on none (3,194 -> 3,139), for 10% more CPU. Large meshes
+  // sheets and fewer parts on 19 runs, more on none (3,194 -> 3,139), for 10-17% more CPU. Large meshes
   // stop before them.
   constexpr Try tries[] = {{1.0, unfold::PartGrowth::Round, 0}, {0.7, unfold::PartGrowth::Tree, 0},
                            {0.5, unfold::PartGrowth::Tree, 0},  {0.85, unfold::PartGrowth::Tree, 0},
