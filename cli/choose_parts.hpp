@@ -30,6 +30,11 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfo
 /// `mm_per_unit`: the face itself when convex, else its largest triangle (layout::shape_sheet_bound).
 std::vector<layout::Polygon> flat_face_cores_mm(const unfold::Unfolding& u, double mm_per_unit);
 
+/// The room for a part (layout::piece_room_mm) when the sheet is cut into `tiles` equal tiles: 2 or 3
+/// across its longer side, 4 or 6 also in two across the shorter; each tile keeps the border for tabs and
+/// spacing, so parts grown to it lie `tiles` to a sheet. 1 (or less): the whole room.
+Vec2 tile_room_mm(const layout::LayoutOptions& o, int tiles);
+
 /// The fewest sheets any partition of `u` can take with `o`: the larger of the area bound for parts and
 /// tabs taking `used_mm2` and the shape bound of the flat faces (layout::shape_sheet_bound).
 long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, double used_mm2);

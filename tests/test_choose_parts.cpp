@@ -93,3 +93,23 @@ TEST(ChooseParts, TheBoundCountsFacesThatCannotShareASheetAndTheChoiceReachesIt)
   ASSERT_TRUE(chosen.layout);
   EXPECT_EQ(sheets_with_pieces(*chosen.layout), 6);
 }
+
+TEST(ChooseParts, TilesOfTheRoomWithTheirBordersFillThePrintableArea) {
+  layout::LayoutOptions o;
+  const Box2 area = layout::printable_area(o);
+  const Vec2 room = layout::piece_room_mm(o);
+  const double border = 0.5 * (area.width() - room.x);
+  ASSERT_GT(border, 0);
+  EXPECT_EQ(cli::tile_room_mm(o, 1).x, room.x);
+  // A4 portrait: halves and thirds are cut across the long side, quarters and sixths across both.
+  const Vec2 half = cli::tile_room_mm(o, 2), third = cli::tile_room_mm(o, 3), sixth = cli::tile_room_mm(o, 6);
+  EXPECT_NEAR(half.x, room.x, 1e-9);
+  EXPECT_NEAR(2 * (half.y + 2 * border), area.height(), 1e-9);
+  EXPECT_NEAR(3 * (third.y + 2 * border), area.height(), 1e-9);
+  EXPECT_NEAR(2 * (sixth.x + 2 * border), area.width(), 1e-9);
+  EXPECT_NEAR(3 * (sixth.y + 2 * border), area.height(), 1e-9);
+  o.paper_mm = {o.paper_mm.y, o.paper_mm.x};  // landscape: the long side is x
+  const Vec2 wide_half = cli::tile_room_mm(o, 2);
+  EXPECT_NEAR(wide_half.y, layout::piece_room_mm(o).y, 1e-9);
+  EXPECT_LT(wide_half.x, 0.5 * layout::piece_room_mm(o).x);
+}

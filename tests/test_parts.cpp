@@ -159,3 +159,26 @@ TEST(Parts, APieceAskedForIsCutSmallerEvenThoughItFitsAndTheOthersStayWhole) {
       EXPECT_GE(fit_in_rect(points, p.room_mm * 0.5).scale, p.mm_per_unit * (1 - 1e-9));
     }
 }
+
+TEST(Parts, PartsGrownIntoATileOfTheSheetFitTheTileAndPiecesThatFitTheSheetStayWhole) {
+  const auto& ex = test::unfolded_example("spot_350.obj", Method::Search);
+  PartOptions p = room_at(ex.unfolding, 250, 1.0, PartGrowth::Round);
+  p.grow_room_mm = {p.room_mm.x, 0.45 * p.room_mm.y};  // about half a sheet
+  const PartsResult tiled = split_into_parts(ex.mesh, ex.unfolding, p);
+  ASSERT_GT(tiled.split_pieces, 0);
+  EXPECT_TRUE(check_unfolding(ex.mesh, tiled.unfolding).empty());
+  PartOptions tile = p;
+  tile.room_mm = p.grow_room_mm;
+  expect_parts_fit(tiled.unfolding, tile);
+  const PartsResult whole =
+      split_into_parts(ex.mesh, ex.unfolding, room_at(ex.unfolding, 250, 1.0, PartGrowth::Round));
+  EXPECT_GT(tiled.unfolding.piece_count, whole.unfolding.piece_count)
+      << "half-sheet parts are more than sheet-sized ones";
+  // The tile only says how large parts grow; which pieces need a split is still the whole room's call.
+  const auto& small = test::unfolded_example("bob_350.obj");
+  PartOptions fits = room_at(small.unfolding, 120);
+  fits.grow_room_mm = {10, 10};
+  const PartsResult kept = split_into_parts(small.mesh, small.unfolding, fits);
+  EXPECT_EQ(kept.split_pieces, 0);
+  EXPECT_EQ(kept.unfolding.piece_count, small.unfolding.piece_count);
+}

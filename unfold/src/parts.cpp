@@ -252,7 +252,9 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   PartsResult result{u, 0, 0};
   if (!(o.mm_per_unit > 0) || !(u.model_extent > 0)) return result;
   const Fitter whole(o.mm_per_unit, o.room_mm);
-  const Fitter fitter(o.mm_per_unit, o.room_mm * std::clamp(o.room_fraction, 0.05, 1.0));
+  const bool tile = o.grow_room_mm.x > 0 && o.grow_room_mm.y > 0;
+  const Fitter fitter(o.mm_per_unit,
+                      tile ? o.grow_room_mm : o.room_mm * std::clamp(o.room_fraction, 0.05, 1.0));
   const std::vector<int> flat_face = flat_face_of(u);
 
   EdgeStates state = edge_states(u);

@@ -29,6 +29,10 @@ struct PartOptions {
   /// Parts are grown to fit room_mm scaled by this (1: as large as the sheet allows; smaller parts pack
   /// better when cut from a spindly net).
   double room_fraction = 1.0;
+  /// When both sides are set (> 0): the rectangle (mm) parts are grown to instead of room_mm scaled by
+  /// room_fraction, e.g. one tile of a sheet cut into halves or sixths, so that parts grown to it tile a
+  /// sheet. It must lie within room_mm at some rotation; room_mm still says which pieces need a split.
+  Vec2 grow_room_mm{0, 0};
   PartGrowth growth = PartGrowth::Fewest;
   /// Pieces to cut to the room scaled by room_fraction even though they fit the room whole (the parts
   /// left alone on a last sheet, cut smaller to fill the gaps of the sheets before).
