@@ -172,6 +172,47 @@ TEST(EdgeNumbers, NumbersRestartInEachPartAndEachPairOfPartsInOutlineOrder) {
   EXPECT_LT(largest, static_cast<int>(seams.size()) / 2) << "numbers stay shorter than one count over all";
 }
 
+TEST(EdgeNumbers, TheTightestSeamsOfACountGetItsOneDigitNumbersStillInOutlineOrder) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 150 / ex.unfolding.model_extent);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const auto outline = number_seams(pieces, seams);
+  const auto room = seam_label_room_mm(pieces, seams, LabelOptions{});
+  const auto printed = number_seams_by_part(seams, outline, room);
+  struct Numbered {
+    int printed, outline;
+    double room_mm;
+  };
+  std::map<std::pair<int, int>, std::vector<Numbered>> of_pair;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
+    const int a = seams[s].sides[0].piece, b = seams[s].sides[1].piece;
+    of_pair[{std::min(a, b), std::max(a, b)}].push_back({printed[s], outline[s], room[s]});
+  }
+  auto digits = [](int n) { return n < 10 ? 1 : n < 100 ? 2 : 3; };
+  std::size_t largest = 0;
+  for (auto& [pair, numbers] : of_pair) {
+    largest = std::max(largest, numbers.size());
+    std::sort(numbers.begin(), numbers.end(),
+              [](const Numbered& a, const Numbered& b) { return a.printed < b.printed; });
+    double widest_short = -1e300, tightest_long = 1e300;
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+      EXPECT_EQ(numbers[i].printed, static_cast<int>(i) + 1);
+      if (digits(numbers[i].printed) == 1) {
+        widest_short = std::max(widest_short, numbers[i].room_mm);
+      } else {
+        tightest_long = std::min(tightest_long, numbers[i].room_mm);
+      }
+      if (i > 0 && digits(numbers[i].printed) == digits(numbers[i - 1].printed)) {
+        EXPECT_GT(numbers[i].outline, numbers[i - 1].outline) << "numbers of one width follow the outline";
+      }
+    }
+    EXPECT_LE(widest_short, tightest_long) << "a roomier seam took a one-digit number";
+  }
+  ASSERT_GT(largest, 20u) << "a count long enough for two-digit numbers";
+  EXPECT_NE(printed, number_seams_by_part(seams, outline))
+      << "the tightest seams are not the first along the outline";
+}
+
 TEST(EdgeNumbers, ASinglePartKeepsOneCountInOutlineOrder) {
   const auto ex = test::tetrahedron();
   ASSERT_EQ(ex.unfolding.piece_count, 1);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -121,18 +122,56 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
   return number;
 }
 
-std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers) {
-  std::vector<std::size_t> in_outline_order(seams.size());
-  std::iota(in_outline_order.begin(), in_outline_order.end(), 0);
-  std::stable_sort(in_outline_order.begin(), in_outline_order.end(),
-                   [&](std::size_t a, std::size_t b) { return outline_numbers[a] < outline_numbers[b]; });
-  std::map<std::pair<int, int>, int> last_of_pair;
-  std::vector<int> number(seams.size(), 0);
-  for (std::size_t s : in_outline_order) {
+namespace {
+
+// The digits of the k-th number of a count (k from 0): 1-9 one digit, 10-99 two, and so on.
+int digits_of_rank(std::size_t k) {
+  int digits = 1;
+  for (std::size_t limit = 9, width = 9; k >= limit; limit += width) {
+    width *= 10;
+    ++digits;
+  }
+  return digits;
+}
+
+}  // namespace
+
+std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers,
+                                      std::span<const double> room_mm) {
+  std::map<std::pair<int, int>, std::vector<std::size_t>> of_pair;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
     const int a = seams[s].sides[0].piece, b = seams[s].sides[1].piece;
-    number[s] = ++last_of_pair[{std::min(a, b), std::max(a, b)}];
+    of_pair[{std::min(a, b), std::max(a, b)}].push_back(s);
+  }
+  std::vector<int> number(seams.size(), 0);
+  std::vector<int> digits(seams.size(), 1);
+  for (auto& [pair, group] : of_pair) {
+    if (room_mm.size() == seams.size()) {
+      std::vector<std::size_t> tightest_first = group;
+      std::stable_sort(tightest_first.begin(), tightest_first.end(),
+                       [&](std::size_t a, std::size_t b) { return room_mm[a] < room_mm[b]; });
+      for (std::size_t k = 0; k < tightest_first.size(); ++k)
+        digits[tightest_first[k]] = digits_of_rank(k);
+    }
+    std::stable_sort(group.begin(), group.end(), [&](std::size_t a, std::size_t b) {
+      return std::pair(digits[a], outline_numbers[a]) < std::pair(digits[b], outline_numbers[b]);
+    });
+    for (std::size_t k = 0; k < group.size(); ++k)
+      number[group[k]] = static_cast<int>(k) + 1;
   }
   return number;
+}
+
+std::vector<double> seam_label_room_mm(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                       const LabelOptions& options) {
+  std::vector<double> room(seams.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t s = 0; s < seams.size(); ++s)
+    for (const SeamSide& at : seams[s].sides) {
+      if (at.piece < 0) continue;
+      const ScaledPiece& piece = pieces[at.piece];
+      room[s] = std::min(room[s], face_room_mm(piece, piece.outline_mm[at.loop][at.index], 0, options));
+    }
+  return room;
 }
 
 std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,

@@ -151,7 +151,8 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   report(o, "drawing", 1, kSteps);
   d.seams = find_seams(u, d.pieces);
   d.numbers = number_seams(d.pieces, d.seams);
-  d.printed = number_seams_by_part(d.seams, d.numbers);
+  d.printed = number_seams_by_part(d.seams, d.numbers,
+                                   seam_label_room_mm(d.pieces, d.seams, label_options_in_use(o)));
   if (o.hints) d.order = assembly_order(seam_loops(d.pieces, d.seams), d.seams);
   report(o, "drawing", 2, kSteps);
   for (const ScaledPiece& p : d.pieces)

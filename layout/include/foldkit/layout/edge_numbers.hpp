@@ -62,7 +62,16 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
 /// so numbers need only be unique per pair of parts; they stay one or two digits where one count over
 /// the whole model needs three, and a short label is what fits beside a small face. With one part this
 /// is number_seams.
-std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers);
+/// With `room_mm` (per seam, seam_label_room_mm), the shortest numbers go where room is least: within
+/// each count the 9 tightest seams take 1-9, the next 90 take 10-99, and so on, each group still rising
+/// in outline order, so a label that has to squeeze beside a small face is one digit, not three.
+std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers,
+                                      std::span<const double> room_mm = {});
+
+/// Per seam, the width its tighter side's face leaves beside a label at the legible minimum height (the
+/// label's own width not taken off); the smaller, the harder to label. Sides on no piece count as roomy.
+std::vector<double> seam_label_room_mm(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
+                                       const LabelOptions& options);
 
 /// What each side of each seam may print, per seam and side: `full` where it fits clear of every line
 /// and label (e.g. "B12 p3"), `brief` where only a shorter form does (e.g. "B12", when the sheets say
