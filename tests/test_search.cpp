@@ -24,6 +24,11 @@ EdgeStates mst_folds(const UnfoldContext& ctx, const EdgeConstraints& c = {}) {
   return spanning_forest(*ctx.mesh, ctx.weight, c);
 }
 
+SearchResult search_on_threads(const UnfoldContext& ctx, SearchOptions opt, int threads) {
+  opt.threads = threads;
+  return search_unfold(ctx, mst_folds(ctx), opt);
+}
+
 std::string joined(const std::vector<std::string>& lines) {
   std::string s;
   for (const auto& l : lines)
@@ -70,12 +75,9 @@ TEST(Search, ThePortfolioGivesTheSameCutsOnOneOrTwoThreads) {
   opt.seed = 7;
   opt.portfolio = 3;
   opt.round_steps = 64;  // many rounds, so that a timing-dependent winner would show
-  opt.threads = 1;
-  const SearchResult one = search_unfold(ctx, mst_folds(ctx), opt);
-  opt.threads = 2;
-  const SearchResult two = search_unfold(ctx, mst_folds(ctx), opt);
-  opt.threads = 3;
-  const SearchResult three = search_unfold(ctx, mst_folds(ctx), opt);
+  const SearchResult one = search_on_threads(ctx, opt, 1);
+  const SearchResult two = search_on_threads(ctx, opt, 2);
+  const SearchResult three = search_on_threads(ctx, opt, 3);
   ASSERT_TRUE(one.solved);
   EXPECT_TRUE(one.edges == two.edges);
   EXPECT_EQ(one.steps, two.steps);
@@ -104,10 +106,8 @@ TEST(Search, AStepBudgetStopsEveryWalkAtTheSameTreeWhateverTheThreads) {
   SearchOptions opt;
   opt.portfolio = 2;
   opt.max_steps = 3;
-  opt.threads = 1;
-  const SearchResult one = search_unfold(ctx, mst_folds(ctx), opt);
-  opt.threads = 2;
-  const SearchResult two = search_unfold(ctx, mst_folds(ctx), opt);
+  const SearchResult one = search_on_threads(ctx, opt, 1);
+  const SearchResult two = search_on_threads(ctx, opt, 2);
   EXPECT_FALSE(one.solved);
   EXPECT_EQ(one.steps, 2 * 3);
   EXPECT_TRUE(one.edges == two.edges);
