@@ -151,6 +151,15 @@ bool CutTree::curvature_allows_fold(EdgeId e) const {
   return true;
 }
 
+bool CutTree::curvature_allows_move(EdgeId cut, EdgeId fold) const {
+  const auto& ends = ctx_->mesh->edge(cut).v;
+  for (int v : ctx_->mesh->edge(fold).v) {
+    const int after = cut_count_[v] - 1 + ((v == ends[0] || v == ends[1]) ? 1 : 0);
+    if (after < ctx_->required_cuts[v]) return false;
+  }
+  return true;
+}
+
 Vec2 CutTree::corner_position(int f, int v) const {
   const auto& face = ctx_->mesh->faces[f];
   const Triangle2& t = index_.triangle(f);

@@ -118,8 +118,8 @@ class Mover {
     // Each candidate re-measures every link: links squared.
     work_ += static_cast<long>(boundary_.size() * boundary_.size());
     for (const Link& l : boundary_) {
-      if (cons_.cut(EdgeId(l.edge)) || !curvature_allows(e, l.edge)) continue;
-      const RigidMotion motion = glue_motion(l);
+      if (cons_.cut(EdgeId(l.edge)) || !tree_.curvature_allows_move(EdgeId(e), EdgeId(l.edge))) continue;
+      const RigidMotion motion = tree_.glue_motion(EdgeId(l.edge), l.inside, l.outside);
       // After the move: e is a seam, l.edge is folded, the other links moved with the side.
       double slits_after = moved_slit(e, e_in, motion);
       for (const Link& o : boundary_)
@@ -155,31 +155,6 @@ class Mover {
 
   double moved_slit(int e, int moved, const RigidMotion& motion) const {
     return slit_cost(seam_gap_per_length(tree_, EdgeId(e), FaceId(moved), motion), opt_.min_gap_per_length);
-  }
-
-  // The motion that takes the side's copy of link l onto the rest's (as CutTree glues them).
-  RigidMotion glue_motion(const Link& l) const {
-    const auto& v = m_.edges[l.edge].v;
-    return motion_onto(corner(l.inside, v[0]), corner(l.inside, v[1]), corner(l.outside, v[0]),
-                       corner(l.outside, v[1]));
-  }
-
-  Vec2 corner(int f, int v) const {
-    const auto& face = m_.faces[f];
-    const Triangle2& t = tree_.flat(FaceId(f));
-    for (int i = 0; i < 3; ++i)
-      if (face[i] == v) return t[i];
-    return t[0];
-  }
-
-  // Cutting e and folding a keeps every vertex at the cut count its curvature needs.
-  bool curvature_allows(int e, int a) const {
-    for (int v : m_.edges[a].v) {
-      const auto& ev = m_.edges[e].v;
-      const int after = tree_.cut_count(VertexId(v)) - 1 + (v == ev[0] || v == ev[1]);
-      if (after < tree_.context().required_cuts[v]) return false;
-    }
-    return true;
   }
 
   CutTree& tree_;

@@ -184,14 +184,9 @@ class Walker {
         const auto& edge = m_.edge(a);
         if (a == e || tree_.folded(a) || edge.boundary() || cons_.cut(a) || tabu(a)) continue;
         if (tree_.in_side(tree_.across(a, FaceId(x)))) continue;
-        // Curvature rule as a pre-filter: after cutting e and folding a, both ends of a must keep
-        // the cut edges their class needs, or the move creates a local overlap for certain.
-        bool ok = true;
-        for (int v : edge.v) {
-          int after = tree_.cut_count(VertexId(v)) - 1 + ((v == ev[0] || v == ev[1]) ? 1 : 0);
-          if (after < ctx_.required_cuts[v]) ok = false;
-        }
-        if (ok) attach_.push_back(a);
+        // Curvature rule as a pre-filter: a move that leaves an end of a short of the cut edges its
+        // class needs creates a local overlap for certain.
+        if (tree_.curvature_allows_move(e, a)) attach_.push_back(a);
       }
     }
     // Edges sharing a vertex with e turn the side about that vertex: a small motion, so few new

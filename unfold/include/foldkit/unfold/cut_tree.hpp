@@ -65,6 +65,12 @@ class CutTree {
   FaceId across(EdgeId e, FaceId f) const;
   /// True when folding edge e keeps both its vertices at or above their required cut count.
   bool curvature_allows_fold(EdgeId e) const;
+  /// True when cutting fold edge `cut` and folding cut edge `fold` (one move) keeps both vertices of
+  /// `fold` at or above their required cut count: otherwise the move overlaps there for certain.
+  bool curvature_allows_move(EdgeId cut, EdgeId fold) const;
+  /// The motion taking the copy of edge e in face `moving` onto its copy in face `fixed` (how a move
+  /// or a stitch glues them).
+  RigidMotion glue_motion(EdgeId e, int moving, int fixed) const;
 
   /// Tree edges on the fold path between faces f and g of the same piece.
   std::vector<EdgeId> path(FaceId f, FaceId g);
@@ -90,14 +96,12 @@ class CutTree {
   void reattach(const std::vector<int>& side, EdgeId cut_edge, EdgeId attach);
 
  private:
-  /// The motion taking the copy of edge e in face `moving` onto its copy in face `fixed`.
   // Construction steps: every piece laid flat breadth-first from its lowest face (returns the triangles),
   // the cut edges at every vertex, every triangle into the overlap index with its overlapping pairs.
   std::vector<Triangle2> lay_out_pieces();
   void place_fold_neighbours(int f, int piece, std::vector<Triangle2>& tri, std::vector<int>& queue);
   void count_cuts();
   void index_all(const std::vector<Triangle2>& tri);
-  RigidMotion glue_motion(EdgeId e, int moving, int fixed) const;
   bool folded(int e) const { return state_[EdgeId(e)] == EdgeState::Fold; }
   int across(int e, int f) const { return across(EdgeId(e), FaceId(f)).index(); }
   bool in_side(int f) const { return side_mark_[f] == side_stamp_; }
