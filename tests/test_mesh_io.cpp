@@ -444,6 +444,16 @@ TEST_F(MeshIo, PlyHeaderPromisingMoreThanTheFileHoldsIsAnInputError) {
   EXPECT_NE(problem_of(write(dir, "h.ply", text)).find("truncated"), std::string::npos);
 }
 
+TEST_F(MeshIo, AnAsciiPlyFaceWithANumberPastItsCountIsAnInputError) {
+  // OpenMesh reads PLY tokens, not lines: the extra -28 would be the next face's count, read as about
+  // four billion (found by fuzz_load_ply: out of memory).
+  std::string text = ply(kOctaVertices, kOctaFaces);
+  const std::size_t last_face = text.rfind("\n3 ", text.size() - 2) + 1;
+  text.insert(text.find('\n', last_face), " -28");
+  EXPECT_NE(problem_of(write(dir, "x.ply", text)).find("4 numbers after a count of 3"), std::string::npos)
+      << problem_of(write(dir, "x.ply", text));
+}
+
 TEST_F(MeshIo, NonManifoldEdgeIsAnInputError) {
   std::vector<Vec3> v = kOctaVertices;
   v.push_back({1, 1, 1});

@@ -488,6 +488,7 @@ void check_ply_header(const std::string& text, const std::string& name, int face
     const auto body = text.find('\n', end);
     detail::AsciiBlockOptions block;
     block.exact_vertex_numbers = h.vertex_properties;
+    block.exact_face_numbers = h.face_layout.size() == 1;
     const std::size_t faces_at = detail::read_ascii_vertex_block(
         text, body == std::string::npos ? text.size() : body + 1, h.nv, name, block);
     detail::read_ascii_faces(text, faces_at, h.nf, h.nv, name, block);

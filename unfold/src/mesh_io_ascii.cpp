@@ -146,6 +146,9 @@ void read_ascii_faces(const std::string& text, std::size_t pos, std::uint64_t fa
     std::uint64_t k = 0;
     if (!parse_index(w[0], k) || k < 3 || w.size() < k + 1)
       throw InputError(name, face + ": unparsable vertex list '" + std::string(line.substr(0, 32)) + "'");
+    if (options.exact_face_numbers && w.size() != k + 1)
+      throw InputError(name, face + ": " + std::to_string(w.size() - 1) + " numbers after a count of " +
+                                 std::to_string(k));
     std::vector<int> polygon;
     polygon.reserve(k);
     for (std::uint64_t i = 1; i <= k; ++i) {

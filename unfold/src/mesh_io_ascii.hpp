@@ -33,6 +33,9 @@ struct AsciiBlockOptions {
   /// > 0: every vertex line has exactly that many numbers (PLY, whose reader takes tokens, not lines,
   /// so one extra number shifts everything after it).
   int exact_vertex_numbers = 0;
+  /// Every face line holds its count and exactly that many indices (PLY faces with no property but the
+  /// index list: an extra number would be read as the next face's count).
+  bool exact_face_numbers = false;
   bool comments = false;  ///< `#` starts a comment to the end of the line (OFF)
 };
 
