@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "foldkit/error.hpp"
+#include "foldkit/layout/edge_numbers.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -167,6 +168,75 @@ TEST(RenderPdf, PutsTextAtItsBaselinePointWithItsCapHeight) {
   EXPECT_LT(y_min, 60 - 5.0);
   EXPECT_GT(y_max, 60);
   EXPECT_LT(y_max, 60 + 3.0);
+}
+
+namespace {
+// Seam labels as the layout sets them: each one word, `width_mm` the length label_width_mm reserves.
+const std::vector<std::string> kLabelWords{"12", "9.", "B12.", "MW108", "(3)", "Zp3", "AI47"};
+constexpr double kLabelCap_mm = 4;
+
+Sheet label_sheet() {
+  Sheet s;
+  s.size_mm = {210, 297};
+  for (std::size_t i = 0; i < kLabelWords.size(); ++i) {
+    Text t{kLabelWords[i], {20, 20 + 12 * static_cast<double>(i)}, kLabelCap_mm, 0, PathRole::Label, 0};
+    t.width_mm = foldkit::layout::label_width_mm(t.text, t.height_mm, foldkit::layout::LabelOptions{});
+    s.texts.push_back(t);
+  }
+  return s;
+}
+
+// Width in mm of each word pdftotext finds on the first page, by its text.
+std::vector<std::pair<std::string, double>> word_widths_mm(const fs::path& pdf) {
+  const std::string html = run("pdftotext -bbox -f 1 -l 1 '" + pdf.string() + "' -");
+  const std::regex word(
+      R"re(<word xMin="([0-9.]+)" yMin="[0-9.]+" xMax="([0-9.]+)" yMax="[0-9.]+">([^<]*)</word>)re");
+  std::vector<std::pair<std::string, double>> out;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), word); it != std::sregex_iterator(); ++it)
+    out.emplace_back((*it)[3], (std::stod((*it)[2]) - std::stod((*it)[1])) / kPtPerMm);
+  return out;
+}
+}  // namespace
+
+// The layout reserves label_width_mm for a label; in the label family the glyphs take about that, no
+// more (a wider font would run into the lines the layout kept it from), and not much less (room wasted).
+TEST(RenderPdf, SeamLabelsInTheNarrowFamilyTakeTheLengthTheLayoutReserves) {
+  if (!have("pdftotext") || !have("pdffonts")) GTEST_SKIP() << "poppler-utils not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "narrow.pdf";
+  render_sheets({label_sheet()}, pdf);
+  EXPECT_NE(run("pdffonts '" + pdf.string() + "'").find("LiberationSansNarrow"), std::string::npos)
+      << "the label family is embedded (Debian fonts-liberation)";
+  const auto words = word_widths_mm(pdf);
+  ASSERT_EQ(words.size(), kLabelWords.size());
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const double reserved = label_sheet().texts[i].width_mm;
+    EXPECT_EQ(words[i].first, kLabelWords[i]);
+    EXPECT_LE(words[i].second, reserved + 0.05) << words[i].first;
+    EXPECT_GE(words[i].second, 0.8 * reserved) << words[i].first;
+  }
+}
+
+TEST(RenderPdf, ALabelFamilyWiderThanReservedIsSqueezedToTheReservedLength) {
+  if (!have("pdftotext")) GTEST_SKIP() << "poppler-utils not installed";
+  const fs::path pdf = foldkit::test::temp_dir("render") / "squeezed.pdf";
+  RenderOptions wide;
+  wide.label_font_family = "DejaVu Sans";  // digits 0.87 of the cap height against 0.70 reserved
+  render_sheets({label_sheet()}, pdf, wide);
+  const auto words = word_widths_mm(pdf);
+  ASSERT_EQ(words.size(), kLabelWords.size());
+  for (std::size_t i = 0; i < words.size(); ++i)
+    EXPECT_LE(words[i].second, label_sheet().texts[i].width_mm + 0.05) << words[i].first;
+}
+
+TEST(RenderSvg, ALabelTakesItsReservedLengthWhateverFontTheViewerHas) {
+  const fs::path svg = foldkit::test::temp_dir("render") / "narrow.svg";
+  render_sheets({label_sheet()}, svg);
+  const std::string text = slurp(svg);
+  EXPECT_NE(text.find("font-family=\"Liberation Sans Narrow\""), std::string::npos);
+  const Text& first = label_sheet().texts.front();
+  std::ostringstream length;
+  length << "textLength=\"" << first.width_mm << "\" lengthAdjust=\"spacingAndGlyphs\"";
+  EXPECT_NE(text.find(length.str()), std::string::npos) << length.str();
 }
 
 TEST(RenderPdf, DrawsLinesWhereTheSheetSaysInMillimetres) {

@@ -104,6 +104,19 @@ TEST(StrokeFont, WidthScalesWithHeight) {
   EXPECT_NEAR(text_advance_mm(font, "1234", 7.5) / text_advance_mm(font, "1234", 3), 2.5, 1e-9);
 }
 
+TEST(StrokeFont, ATextLongerThanItsReservedWidthIsSqueezedAlongItsBaselineOnly) {
+  REQUIRE_FONT();
+  const StrokeFont& font = *futural();
+  const Box2 natural = bounds(text_strokes(font, "B12 p3", {0, 0}, 4));
+  const double advance = text_advance_mm(font, "B12 p3", 4);
+  const Box2 squeezed = bounds(text_strokes(font, "B12 p3", {0, 0}, 4, 0, 0.7 * advance));
+  EXPECT_NEAR(squeezed.width(), 0.7 * natural.width(), 1e-9);
+  EXPECT_NEAR(squeezed.height(), natural.height(), 1e-9);
+  EXPECT_LE(squeezed.max.x, 0.7 * advance + 1e-9) << "inside the reserved length";
+  const Box2 roomy = bounds(text_strokes(font, "B12 p3", {0, 0}, 4, 0, 2 * advance));
+  EXPECT_NEAR(roomy.width(), natural.width(), 1e-9) << "a shorter text is not stretched";
+}
+
 TEST(StrokeFont, RotationTurnsTheTextClockwiseAboutItsAnchor) {
   REQUIRE_FONT();
   const StrokeFont& font = *futural();

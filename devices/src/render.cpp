@@ -134,11 +134,11 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
   // Every file is complete before the first rename, and a rename that fails puts the earlier ones
   // back, so a run never leaves sheets 1 and 2 of a new layout beside sheet 3 of an old one.
   AtomicFileSet files;
-  const double cap_ratio = ext == ".svg" ? detail::cap_height_ratio(options.font_family) : 0;
+  const detail::CapRatios caps = ext == ".svg" ? detail::cap_height_ratios(options) : detail::CapRatios{};
   for (std::size_t i = 0; i < sheets.size(); ++i) {
     AtomicFile& file = files.add(sheet_file_path(path, i));
     if (ext == ".svg") {
-      detail::write_svg(file.stream(), sheets[i], options, cap_ratio);
+      detail::write_svg(file.stream(), sheets[i], options, caps);
     } else {
       std::string error;
       if (!detail::write_png(file.stream(), sheets[i], options, error)) {

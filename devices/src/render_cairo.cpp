@@ -85,31 +85,48 @@ void draw_paths(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, P
   }
 }
 
-void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
-  cairo_select_font_face(cr, options.font_family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+// A text wider in the font found than the layout reserved (a fallback family) is squeezed along its
+// baseline to the reserved length rather than run over the lines the layout kept it clear of.
+void squeeze_to_width(cairo_t* cr, const Text& text) {
+  if (!(text.width_mm > 0)) return;
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.text.c_str(), &extents);
+  if (extents.x_advance > text.width_mm) cairo_scale(cr, text.width_mm / extents.x_advance, 1);
+}
+
+void draw_text(cairo_t* cr, const Text& text, const RoleStyle& style, bool halo) {
+  cairo_save(cr);
+  cairo_translate(cr, text.at_mm.x, text.at_mm.y);
+  // y points down, so a positive Cairo rotation turns clockwise on the page: the Text convention.
+  cairo_rotate(cr, text.angle_rad);
+  squeeze_to_width(cr, text);
+  cairo_move_to(cr, 0, 0);
+  if (halo) {
+    // A white halo keeps labels readable on dark textures.
+    cairo_text_path(cr, text.text.c_str());
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke_preserve(cr);
+    set_source(cr, style.stroke);
+    cairo_fill(cr);
+  } else {
+    set_source(cr, style.stroke);
+    cairo_show_text(cr, text.text.c_str());
+  }
+  cairo_restore(cr);
+}
+
+void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
   for (PathRole role : kPaintOrder) {
+    const bool label_font = in_label_font(role);
+    const std::string& family = label_font ? options.label_font_family : options.font_family;
+    const double cap_ratio = label_font ? caps.label : caps.text;
+    cairo_select_font_face(cr, family.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     for (const Text& text : sheet.texts) {
       if (text.role != role || text.text.empty() || !(text.height_mm > 0)) continue;
-      cairo_save(cr);
-      cairo_translate(cr, text.at_mm.x, text.at_mm.y);
-      // y points down, so a positive Cairo rotation turns clockwise on the page: the Text convention.
-      cairo_rotate(cr, text.angle_rad);
       cairo_set_font_size(cr, text.height_mm / cap_ratio);
-      cairo_move_to(cr, 0, 0);
-      if (!sheet.fills.empty()) {
-        // A white halo keeps labels readable on dark textures.
-        cairo_text_path(cr, text.text.c_str());
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        cairo_stroke_preserve(cr);
-        set_source(cr, options.style(role).stroke);
-        cairo_fill(cr);
-      } else {
-        set_source(cr, options.style(role).stroke);
-        cairo_show_text(cr, text.text.c_str());
-      }
-      cairo_restore(cr);
+      draw_text(cr, text, options.style(role), !sheet.fills.empty());
     }
   }
 }
@@ -176,7 +193,7 @@ void paint_fill_raster(cairo_t* cr, const Sheet& sheet, const FillImages& images
 }
 
 // Fills painted directly (PNG), or as one image per sheet (PDF: raster_dpi > 0).
-void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, double cap_ratio,
+void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps,
                 const FillImages& images, double raster_dpi = 0) {
   if (raster_dpi > 0)
     paint_fill_raster(cr, sheet, images, raster_dpi);
@@ -186,8 +203,8 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, d
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   for (PathRole role : kPaintOrder)
     draw_paths(cr, sheet, options, role);
-  draw_texts(cr, sheet, options, cap_ratio);
-  draw_legend(cr, sheet, options, cap_ratio);
+  draw_texts(cr, sheet, options, caps);
+  draw_legend(cr, sheet, options, caps.text);
 }
 
 }  // namespace
@@ -196,6 +213,14 @@ double cap_height_ratio(const std::string& family) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1));
   ContextPtr cr(cairo_create(surface.get()));
   return measure_cap_ratio(cr.get(), family);
+}
+
+CapRatios cap_height_ratios(const RenderOptions& options) {
+  return {cap_height_ratio(options.font_family), cap_height_ratio(options.label_font_family)};
+}
+
+bool in_label_font(PathRole role) {
+  return role == PathRole::Label || role == PathRole::Hint;
 }
 
 bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const RenderOptions& options,
@@ -207,7 +232,7 @@ bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const Render
   cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "foldkit");
   {
     ContextPtr cr(cairo_create(surface.get()));
-    const double cap_ratio = measure_cap_ratio(cr.get(), options.font_family);
+    const CapRatios caps = cap_height_ratios(options);
     const FillImages images(sheets, options.image_dpi);
     for (const Sheet& sheet : sheets) {
       // Page size may change between pages; it must be set before anything is drawn on the page.
@@ -215,7 +240,7 @@ bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const Render
                                  sheet.size_mm.y * kPointsPerMm);
       cairo_save(cr.get());
       cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
-      draw_sheet(cr.get(), sheet, options, cap_ratio, images, options.image_dpi);
+      draw_sheet(cr.get(), sheet, options, caps, images, options.image_dpi);
       cairo_restore(cr.get());
       cairo_show_page(cr.get());
     }
@@ -253,7 +278,7 @@ bool write_png(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
     cairo_paint(cr.get());
     cairo_scale(cr.get(), px_per_mm, px_per_mm);
     const FillImages images(std::span<const Sheet>(&sheet, 1), std::min(options.image_dpi, options.png_dpi));
-    draw_sheet(cr.get(), sheet, options, measure_cap_ratio(cr.get(), options.font_family), images);
+    draw_sheet(cr.get(), sheet, options, cap_height_ratios(options), images);
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
       error = cairo_status_to_string(cairo_status(cr.get()));
       return false;

@@ -63,8 +63,20 @@ std::optional<RoleStyle> sheet_style(const RenderOptions& options, const Sheet& 
 /// so that PDF, PNG and SVG texts come out the same size.
 double cap_height_ratio(const std::string& family);
 
+/// Cap heights as fractions of the font size, of the text family and of the label family.
+struct CapRatios {
+  double text = 0.72;
+  double label = 0.72;
+};
+
+/// Both families of `options` measured with cap_height_ratio.
+CapRatios cap_height_ratios(const RenderOptions& options);
+
+/// True for the roles printed in the label family (seam labels and their hints).
+bool in_label_font(PathRole role);
+
 /// Writes one sheet as a standalone SVG document.
-void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio);
+void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps);
 
 /// Writes all sheets as one PDF document, one page per sheet. Returns false with `error` set on failure.
 bool write_pdf(std::ostream& out, const std::vector<Sheet>& sheets, const RenderOptions& options,

@@ -133,6 +133,9 @@ void write_text(std::ostream& out, const Text& text, const RenderOptions& option
   constexpr double kDegPerRad = 57.29577951308232;
   out << "    <text x=\"" << num(text.at_mm.x) << "\" y=\"" << num(text.at_mm.y) << "\" font-size=\""
       << num(text.height_mm / cap_ratio) << "\"";
+  // The viewer's fonts are not ours: whatever family it finds, the text takes the length reserved.
+  if (text.width_mm > 0)
+    out << " textLength=\"" << num(text.width_mm) << "\" lengthAdjust=\"spacingAndGlyphs\"";
   // y points down in SVG too, so a positive angle is clockwise on the page, as in Text.
   if (text.angle_rad != 0) {
     out << " transform=\"rotate(" << num(text.angle_rad * kDegPerRad) << " " << num(text.at_mm.x) << " "
@@ -175,7 +178,7 @@ void write_legend(std::ostream& out, const Sheet& sheet, const RenderOptions& op
 
 }  // namespace
 
-void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
+void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
   const std::string w = num(sheet.size_mm.x), h = num(sheet.size_mm.y);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
@@ -190,18 +193,20 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
     for (const Path& path : sheet.paths) {
       if (drawn && path.role == role && !path.points_mm.empty()) write_path(out, path, style);
     }
+    const bool label_font = in_label_font(role);
     bool any_text = false;
     for (const Text& text : sheet.texts) {
       if (text.role != role || text.text.empty()) continue;
       if (!any_text) {
         // Texts are filled glyphs, not outlines: undo the group's stroke for them.
-        out << "    <g stroke=\"none\" font-family=\"" << escape(options.font_family) << "\">\n";
+        out << "    <g stroke=\"none\" font-family=\""
+            << escape(label_font ? options.label_font_family : options.font_family) << "\">\n";
         any_text = true;
       }
-      write_text(out, text, options, cap_ratio, !sheet.fills.empty());
+      write_text(out, text, options, label_font ? caps.label : caps.text, !sheet.fills.empty());
     }
     if (any_text) out << "    </g>\n";
-    if (role == PathRole::Sheet) write_legend(out, sheet, options, cap_ratio);
+    if (role == PathRole::Sheet) write_legend(out, sheet, options, caps.text);
     out << "  </g>\n";
   }
   out << "</svg>\n";

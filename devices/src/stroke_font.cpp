@@ -167,10 +167,13 @@ double text_advance_mm(const StrokeFont& font, std::string_view text, double hei
 }
 
 std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, std::string_view text, Vec2 at_mm,
-                                            double height_mm, double angle_rad) {
+                                            double height_mm, double angle_rad, double width_mm) {
   std::vector<std::vector<Vec2>> out;
   if (!(height_mm > 0) || !std::isfinite(height_mm)) return out;
   const double scale = height_mm / font.cap_height;
+  const double advance_mm = text_advance_mm(font, text, height_mm);
+  // Along the baseline only: a stroke font squeezed to the reserved length keeps its height.
+  const double squeeze = width_mm > 0 && advance_mm > width_mm ? width_mm / advance_mm : 1.0;
   double cursor = 0;  // font units along the baseline
   for (char32_t code : decode_utf8(text)) {
     if (code < 32 || code == 127) continue;
@@ -180,7 +183,7 @@ std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, std::string_
       std::vector<Vec2> placed;
       placed.reserve(stroke.size());
       for (Vec2 p : stroke) {
-        const Vec2 local{(cursor + p.x - g->left) * scale, (p.y - font.baseline) * scale};
+        const Vec2 local{(cursor + p.x - g->left) * scale * squeeze, (p.y - font.baseline) * scale};
         // With y down, the standard rotation turns clockwise on the page: the Text convention.
         placed.push_back(at_mm + rotated(local, angle_rad));
       }
@@ -192,7 +195,7 @@ std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, std::string_
 }
 
 std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, const Text& text) {
-  return text_strokes(font, text.text, text.at_mm, text.height_mm, text.angle_rad);
+  return text_strokes(font, text.text, text.at_mm, text.height_mm, text.angle_rad, text.width_mm);
 }
 
 }  // namespace foldkit::devices

@@ -289,9 +289,12 @@ std::vector<Text> upright_label_texts(const Label& label, const std::string& tex
     dir = -1.0 * label.dir;
   }
   std::vector<Text> out{make_text(text, start, dir, h, PathRole::Label, label.piece, t, paper_h)};
-  if (!label.hint.empty())
+  out.back().width_mm = text_w;
+  if (!label.hint.empty()) {
     out.push_back(make_text(label.hint, start + dir * (text_w + hint_gap), dir, hint_h, PathRole::Hint,
                             label.piece, t, paper_h));
+    out.back().width_mm = label_width_mm(label.hint, hint_h, metrics);
+  }
   return out;
 }
 

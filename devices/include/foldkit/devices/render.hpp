@@ -29,6 +29,9 @@ struct RenderOptions {
   double png_dpi = 150;                    ///< resolution of PNG previews
   std::string format;                      ///< "pdf", "svg" or "png"; empty: from the path's extension
   std::string font_family = "sans-serif";  ///< fontconfig family for texts (embedded in PDF)
+  /// Family of the seam labels and their hints: narrow digits (two thirds of the cap height, Debian's
+  /// fonts-liberation) are what lets a two-digit number sit beside a small face at a legible height.
+  std::string label_font_family = "Liberation Sans Narrow";
   RoleStyle cut{{0, 0, 0}, 0.25, {}};
   RoleStyle mountain{{0.62, 0.12, 0.08}, 0.2, {2.5, 0.8, 0.4, 0.8}};  ///< dash-dot
   RoleStyle valley{{0.08, 0.28, 0.62}, 0.2, {2.0, 1.0}};              ///< dashed

@@ -39,11 +39,12 @@ StrokeFont load_stroke_font(const std::filesystem::path& path);
 /// Polylines (sheet mm, y down) a pen draws for `text`, placed like sheet.hpp's Text: `at_mm` is the
 /// left end of the baseline, capitals and digits are `height_mm` tall, the text runs along
 /// `angle_rad` (positive = clockwise on the page). UTF-8 input; characters the font lacks are drawn
-/// as "?" (or skipped when there is no "?"), control characters are ignored.
+/// as "?" (or skipped when there is no "?"), control characters are ignored. With `width_mm` > 0 a
+/// text whose advance is longer is squeezed along its baseline to that length (its height kept).
 std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, std::string_view text, Vec2 at_mm,
-                                            double height_mm, double angle_rad = 0);
+                                            double height_mm, double angle_rad = 0, double width_mm = 0);
 
-/// The strokes of a sheet Text.
+/// The strokes of a sheet Text, squeezed to its width_mm when it has one.
 std::vector<std::vector<Vec2>> text_strokes(const StrokeFont& font, const Text& text);
 
 /// Length of `text` along its baseline in mm at `height_mm` (sum of glyph advances).

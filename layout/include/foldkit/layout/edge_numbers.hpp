@@ -22,9 +22,10 @@ struct LabelOptions {
   double max_mm = 3.5;  ///< largest cap height
   /// Cap height as a fraction of the edge length before the limits apply.
   double per_length = 0.3;
-  /// Advance of one digit as a fraction of the cap height: DejaVu Sans digits are 0.636 em wide with
-  /// 0.729 em capitals (0.87), Hershey futural 20 units to 21 (0.95); the larger keeps both inside.
-  double char_width = 0.95;
+  /// Advance of one digit as a fraction of the cap height: Liberation Sans Narrow, the labels' print
+  /// family, has 0.456 em digits with 0.688 em capitals (0.67). Outputs in another font (a pen's
+  /// Hershey futural is 0.95) squeeze each label to the length reserved for it.
+  double char_width = 0.70;
   double gap_mm = 0.5;         ///< between the edge and the label's foot
   double clearance_mm = 0.25;  ///< least distance from other lines and labels
   /// The assembly-step hint after the number: its cap height and the gap before it, as shares of the

@@ -63,6 +63,9 @@ struct Text {
   double angle_rad = 0;
   PathRole role = PathRole::Label;
   int piece = -1;
+  /// The length the layout reserved along the baseline, 0 for none. A renderer whose font sets the
+  /// text wider squeezes it to this length, so it never runs into the lines the layout kept it from.
+  double width_mm = 0;
 };
 
 /// A texture image that fills refer to: a file, or the encoded bytes a model file embedded.
