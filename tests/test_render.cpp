@@ -14,6 +14,7 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/layout/edge_numbers.hpp"
+#include "test_images.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -226,6 +227,37 @@ TEST(RenderPdf, ALabelFamilyWiderThanReservedIsSqueezedToTheReservedLength) {
   ASSERT_EQ(words.size(), kLabelWords.size());
   for (std::size_t i = 0; i < words.size(); ++i)
     EXPECT_LE(words[i].second, label_sheet().texts[i].width_mm + 0.05) << words[i].first;
+}
+
+// On a coloured sheet every text has a white halo; a label 0.3 mm above its edge must not whiten the
+// cut line under its halo (the print is what the cutter's lines are checked against).
+TEST(RenderPng, TheHaloOfALabelBesideItsEdgeLeavesTheLineVisible) {
+  Sheet s;
+  s.size_mm = {100, 100};
+  s.fills.push_back({{{10, 10}, {90, 10}, {90, 90}, {10, 90}}, foldkit::Colour{0.2, 0.5, 0.2}});
+  s.paths.push_back({PathRole::Cut, {{10, 50}, {90, 50}}, false, 0});
+  s.texts.push_back({"88888888", {20, 49.7}, 3.0, 0.0, PathRole::Label, 0});
+  const fs::path png = foldkit::test::temp_dir("render") / "halo.png";
+  RenderOptions o;
+  o.png_dpi = 300;
+  render_sheets({s}, png, o);
+  const foldkit::test::RgbImage image = foldkit::test::read_image(png);
+  ASSERT_EQ(image.w, 1181);
+  const double px_per_mm = 300 / 25.4;
+  const int row = static_cast<int>(std::lround(50 * px_per_mm));
+  int whitened = 0, columns = 0;
+  for (int x = static_cast<int>(22 * px_per_mm); x < static_cast<int>(38 * px_per_mm); ++x, ++columns) {
+    const unsigned char* p = image.px(x, row);
+    whitened += p[0] + p[1] + p[2] > 300;
+  }
+  EXPECT_EQ(whitened, 0) << "of " << columns << " pixels of the cut line under the label";
+  int white_in_band = 0;
+  for (int y = static_cast<int>(47 * px_per_mm); y < row - 2; ++y)
+    for (int x = static_cast<int>(20 * px_per_mm); x < static_cast<int>(38 * px_per_mm); ++x) {
+      const unsigned char* p = image.px(x, y);
+      white_in_band += p[0] + p[1] + p[2] > 700;
+    }
+  EXPECT_GT(white_in_band, 100) << "the halo is there, around the digits";
 }
 
 TEST(RenderSvg, ALabelTakesItsReservedLengthWhateverFontTheViewerHas) {

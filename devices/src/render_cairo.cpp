@@ -19,8 +19,6 @@ constexpr double kMmPerInch = 25.4;
 constexpr double kPointsPerMm = 72.0 / kMmPerInch;
 // Cairo image surfaces are limited to 32767 pixels a side.
 constexpr int kMaxImageSide = 32767;
-// Width of the white halo around labels on coloured sheets, per millimetre of cap height.
-constexpr double kHaloPerCap = 0.35;
 
 cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
   auto* out = static_cast<std::ostream*>(closure);
@@ -94,30 +92,24 @@ void squeeze_to_width(cairo_t* cr, const Text& text) {
   if (extents.x_advance > text.width_mm) cairo_scale(cr, text.width_mm / extents.x_advance, 1);
 }
 
-void draw_text(cairo_t* cr, const Text& text, const RoleStyle& style, bool halo) {
+// Moves to a text's baseline start in its own frame (placed, turned and squeezed as the Text says) and
+// calls `draw()` there.
+template <class Draw>
+void at_text(cairo_t* cr, const Text& text, Draw draw) {
   cairo_save(cr);
   cairo_translate(cr, text.at_mm.x, text.at_mm.y);
   // y points down, so a positive Cairo rotation turns clockwise on the page: the Text convention.
   cairo_rotate(cr, text.angle_rad);
   squeeze_to_width(cr, text);
   cairo_move_to(cr, 0, 0);
-  if (halo) {
-    // A white halo keeps labels readable on dark textures.
-    cairo_text_path(cr, text.text.c_str());
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke_preserve(cr);
-    set_source(cr, style.stroke);
-    cairo_fill(cr);
-  } else {
-    set_source(cr, style.stroke);
-    cairo_show_text(cr, text.text.c_str());
-  }
+  draw();
   cairo_restore(cr);
 }
 
-void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
+// Calls `draw(text)` for every drawn text, role by role in paint order, with its family and size set.
+template <class Draw>
+void for_each_text(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps,
+                   Draw draw) {
   for (PathRole role : kPaintOrder) {
     const bool label_font = in_label_font(role);
     const std::string& family = label_font ? options.label_font_family : options.font_family;
@@ -126,9 +118,32 @@ void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, c
     for (const Text& text : sheet.texts) {
       if (text.role != role || text.text.empty() || !(text.height_mm > 0)) continue;
       cairo_set_font_size(cr, text.height_mm / cap_ratio);
-      draw_text(cr, text, options.style(role), !sheet.fills.empty());
+      draw(text);
     }
   }
+}
+
+// On coloured sheets a white halo keeps texts readable on dark textures. It is painted before the lines,
+// so a label close to its edge never whitens the cut or fold line it stands beside.
+void draw_text_halos(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
+  if (sheet.fills.empty()) return;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for_each_text(cr, sheet, options, caps, [&](const Text& text) {
+    cairo_new_path(cr);
+    at_text(cr, text, [&] { cairo_text_path(cr, text.text.c_str()); });
+    cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
+    cairo_stroke_preserve(cr);
+    cairo_fill(cr);
+  });
+}
+
+void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
+  // Shown as text, not as glyph paths, so that the PDF keeps it as text (pdftotext, search, copy).
+  for_each_text(cr, sheet, options, caps, [&](const Text& text) {
+    set_source(cr, options.style(text.role).stroke);
+    at_text(cr, text, [&] { cairo_show_text(cr, text.text.c_str()); });
+  });
 }
 
 double measure_cap_ratio(cairo_t* cr, const std::string& family) {
@@ -201,6 +216,7 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, c
     paint_fills(cr, sheet, images);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  draw_text_halos(cr, sheet, options, caps);
   for (PathRole role : kPaintOrder)
     draw_paths(cr, sheet, options, role);
   draw_texts(cr, sheet, options, caps);

@@ -46,6 +46,8 @@ inline constexpr std::array<LegendRow, 4> kLegend = {{{PathRole::Cut, "cut", fal
                                                       {PathRole::Tab, "glue tab", true}}};
 /// Row pitch and sample length of the legend (mm), and its text's cap height.
 inline constexpr double kLegendRow_mm = 5.5, kLegendSample_mm = 8, kLegendText_mm = 2.2;
+/// Stroke width of the white halo under texts on coloured sheets, per millimetre of cap height.
+inline constexpr double kHaloPerCap = 0.35;
 
 /// The colour of a filled, tinted path (the guide's part colours): the tint lightened, times its shade.
 inline Rgb shaded_fill(const Path& path) {

@@ -128,6 +128,7 @@ void write_fills(std::ostream& out, const Sheet& sheet, const RenderOptions& opt
       << "\"/>\n  </g>\n";
 }
 
+// A text in its colour, or (`halo`) its white halo.
 void write_text(std::ostream& out, const Text& text, const RenderOptions& options, double cap_ratio,
                 bool halo) {
   constexpr double kDegPerRad = 57.29577951308232;
@@ -141,11 +142,30 @@ void write_text(std::ostream& out, const Text& text, const RenderOptions& option
     out << " transform=\"rotate(" << num(text.angle_rad * kDegPerRad) << " " << num(text.at_mm.x) << " "
         << num(text.at_mm.y) << ")\"";
   }
-  // A white halo keeps labels readable on dark textures.
   if (halo)
-    out << " stroke=\"#ffffff\" stroke-width=\"" << num(0.35 * text.height_mm)
-        << "\" stroke-linejoin=\"round\" paint-order=\"stroke\"";
-  out << " fill=\"" << colour(options.style(text.role).stroke) << "\">" << escape(text.text) << "</text>\n";
+    out << " stroke=\"#ffffff\" stroke-width=\"" << num(kHaloPerCap * text.height_mm)
+        << "\" stroke-linejoin=\"round\" fill=\"#ffffff\">";
+  else
+    out << " fill=\"" << colour(options.style(text.role).stroke) << "\">";
+  out << escape(text.text) << "</text>\n";
+}
+
+// On coloured sheets a white halo keeps texts readable on dark textures: a white copy of every text,
+// stroked, in a group before the lines, so a label close to its edge never whitens the line beside it.
+void write_text_halos(std::ostream& out, const Sheet& sheet, const RenderOptions& options,
+                      const CapRatios& caps) {
+  if (sheet.fills.empty()) return;
+  out << "  <g id=\"halo\">\n";
+  for (PathRole role : kPaintOrder) {
+    const bool label_font = in_label_font(role);
+    out << "    <g font-family=\"" << escape(label_font ? options.label_font_family : options.font_family)
+        << "\">\n";
+    for (const Text& text : sheet.texts)
+      if (text.role == role && !text.text.empty())
+        write_text(out, text, options, label_font ? caps.label : caps.text, true);
+    out << "    </g>\n";
+  }
+  out << "  </g>\n";
 }
 
 // The legend of line styles in the box layout kept for it, inside the sheet group.
@@ -186,6 +206,7 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
          "xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\""
       << w << "mm\" height=\"" << h << "mm\" viewBox=\"0 0 " << w << " " << h << "\">\n";
   write_fills(out, sheet, options);
+  write_text_halos(out, sheet, options, caps);
   for (PathRole role : kPaintOrder) {
     const std::optional<RoleStyle> drawn = sheet_style(options, sheet, role);
     const RoleStyle& style = drawn ? *drawn : options.style(role);
@@ -203,7 +224,7 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
             << escape(label_font ? options.label_font_family : options.font_family) << "\">\n";
         any_text = true;
       }
-      write_text(out, text, options, label_font ? caps.label : caps.text, !sheet.fills.empty());
+      write_text(out, text, options, label_font ? caps.label : caps.text, false);
     }
     if (any_text) out << "    </g>\n";
     if (role == PathRole::Sheet) write_legend(out, sheet, options, caps.text);

@@ -26,7 +26,7 @@ struct LabelOptions {
   /// family, has 0.456 em digits with 0.688 em capitals (0.67). Outputs in another font (a pen's
   /// Hershey futural is 0.95) squeeze each label to the length reserved for it.
   double char_width = 0.70;
-  double gap_mm = 0.5;         ///< between the edge and the label's foot
+  double gap_mm = 0.3;         ///< between the edge and the label's foot
   double clearance_mm = 0.25;  ///< least distance from other lines and labels
   /// The assembly-step hint after the number: its cap height and the gap before it, as shares of the
   /// number's cap height.
