@@ -120,6 +120,24 @@ TEST(EdgeNumbers, ANeedleFaceTooNarrowAlongItsShortEdgeGetsItsLabelAcrossItClear
     EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
 }
 
+TEST(EdgeNumbers, ANeedleFaceCrossedByAFoldStillGetsItsLabelAcrossItRatherThanOverItsOutline) {
+  // The needle above with a fold line across it 2 mm above the base (as where the face meets the next
+  // one): across the base the label crosses the fold, along the base it runs into the outline. Crossing
+  // a fold is the lesser harm: the label reads across the face, not crowded against the cut line.
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {3, 0}, {1.5, 30});
+  const std::vector<std::vector<FoldLine>> folds{{FoldLine{PathRole::Valley, {0.1, 2}, {2.9, 2}, 7}}};
+  LabelOptions o;
+  o.min_mm = 2;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_FALSE(l.crowded);
+  EXPECT_TRUE(l.over_fold);
+  EXPECT_NEAR(dot(l.dir, Vec2{0, 1}), 1, 1e-9) << "reads away from the base, into the face";
+  for (Vec2 corner : l.box_mm)
+    EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}
+
 TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
   // A 7 mm triangle with two part letters standing side by side over its base: "12" at 2 mm (2.8 mm
   // wide) covers one of them wherever it goes beside the base, and both in the base's middle.

@@ -440,7 +440,9 @@ class LabelPlacer {
 
   // Inside the piece along the edge, foot towards it: slid along the edge and lifted off it.
   std::optional<Label> on_face(const SideTask& side, double h, const Form& f, Clearance level) const {
-    static constexpr std::array<double, 11> kAlong{0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.12, 0.88, 0.06, 0.94};
+    static constexpr std::array<double, 21> kAlong{0.5,  0.45, 0.55, 0.4,  0.6,  0.35, 0.65,
+                                                   0.3,  0.7,  0.25, 0.75, 0.2,  0.8,  0.16,
+                                                   0.84, 0.12, 0.88, 0.08, 0.92, 0.04, 0.96};
     const OutlineEdge& e = *side.edge;
     const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
     const double w = full_width(side, h, f);
@@ -517,7 +519,7 @@ class LabelPlacer {
         return;
       }
     }
-    if (level != Clearance::Clear) return;
+    if (level == Clearance::OverOutline) return;
     if (auto label = across_face(side, o_.min_mm, kForms[3], level))
       commit(side, std::move(*label), level, 3);
   }
