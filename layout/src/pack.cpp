@@ -1,6 +1,7 @@
 #include "foldkit/layout/pack.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -8,11 +9,14 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "foldkit/error.hpp"
 #include "foldkit/geom/hull.hpp"
+#include "foldkit/geom/parallel.hpp"
 
 namespace foldkit::layout {
 namespace {
@@ -359,13 +363,17 @@ ItemRasters rasterize_items(std::span<const PackItem> items, int rotations, cons
   return r;
 }
 
-// Progress counts placements over every order tried: the three plain ones and the shaken ones.
+// Progress counts placements over every order tried: the three plain ones and the shaken ones. Orders
+// run on several threads; every thread counts, and the calling thread tells (progress callbacks need
+// not be thread-safe), so the reports still rise with every placement it makes.
 struct PlacementCount {
   const PackOptions& options;
   long most = 0;
-  long done = 0;
+  std::atomic<long> done{0};
+  std::thread::id teller = std::this_thread::get_id();
   void placed() {
-    if (options.progress) options.progress(++done, most);
+    const long now = ++done;
+    if (options.progress && std::this_thread::get_id() == teller) options.progress(now, most);
   }
 };
 
@@ -449,6 +457,47 @@ struct BestRun {
   }
 };
 
+// Packs the orders in batches, one thread per order, and judges each batch in order: the best run is the
+// one a single thread would find, whatever the threads. `go_on(best)` is asked before each order is
+// judged; once it says no, the rest are not run. Each thread keeps its own sheet grids.
+class OrderPacker {
+ public:
+  OrderPacker(const ItemRasters& shapes, const PackGrid& g, const SheetGrid& blank,
+              const PackOptions& options, PlacementCount& count)
+      : shapes_(shapes),
+        g_(g),
+        blank_(blank),
+        options_(options),
+        count_(count),
+        threads_(resolve_threads(options.threads)),
+        scratch_(static_cast<std::size_t>(threads_)) {}
+
+  template <class GoOn>
+  void run(const std::vector<std::vector<int>>& orders, BestRun& runs, GoOn go_on) {
+    for (std::size_t first = 0; first < orders.size(); first += scratch_.size()) {
+      if (runs.best && !go_on(*runs.best)) return;
+      const int batch = static_cast<int>(std::min(scratch_.size(), orders.size() - first));
+      std::vector<std::optional<OrderRun>> done(static_cast<std::size_t>(batch));
+      run_parallel(batch, threads_, [&](int k) {
+        done[k] = pack_in_order(orders[first + k], shapes_, g_, blank_, options_, count_, scratch_[k]);
+      });
+      for (std::optional<OrderRun>& r : done) {
+        if (runs.best && !go_on(*runs.best)) return;
+        runs.consider(std::move(*r));
+      }
+    }
+  }
+
+ private:
+  const ItemRasters& shapes_;
+  const PackGrid& g_;
+  const SheetGrid& blank_;
+  const PackOptions& options_;
+  PlacementCount& count_;
+  int threads_;
+  std::vector<std::vector<SheetGrid>> scratch_;
+};
+
 }  // namespace
 
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
@@ -461,22 +510,25 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
 
   // Greedy packing depends on the order: a few largest-first orders, keeping the best.
   BestRun runs;
-  std::vector<SheetGrid> sheets;
-  for (const std::vector<double>* key : {&shapes.area, &shapes.longest, &shapes.girth})
-    runs.consider(pack_in_order(largest_first(*key), shapes, g, blank, options, count, sheets));
+  OrderPacker packer(shapes, g, blank, options, count);
+  packer.run({largest_first(shapes.area), largest_first(shapes.longest), largest_first(shapes.girth)}, runs,
+             [](const OrderRun&) { return true; });
 
   // When that leaves more sheets than the items' cells could fill, shaken largest-first orders (each
   // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
   // seed: the same input always packs the same way.
   const long bound = reachable_sheets(shapes.rasters, blank.free_cells());
   std::uint64_t seed = kShakeSeed;
-  for (int k = 0; k < shaken && runs.best->result.unplaced.empty() && runs.best->result.sheet_count > bound;
-       ++k) {
+  std::vector<std::vector<int>> shaken_keys;
+  for (int k = 0; k < shaken; ++k) {
     std::vector<double> key = shapes.area;
     for (double& a : key)
       a *= std::exp2(2 * unit_random(seed) - 1);
-    runs.consider(pack_in_order(largest_first(key), shapes, g, blank, options, count, sheets));
+    shaken_keys.push_back(largest_first(key));
   }
+  packer.run(shaken_keys, runs, [&](const OrderRun& best) {
+    return best.result.unplaced.empty() && best.result.sheet_count > bound;
+  });
   if (options.progress) options.progress(count.most, count.most);
   return std::move(runs.best->result);
 }

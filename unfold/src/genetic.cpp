@@ -13,11 +13,11 @@
 #include <random>
 #include <thread>
 
+#include "foldkit/geom/parallel.hpp"
 #include "foldkit/unfold/decompose.hpp"
 #include "foldkit/unfold/disjoint_sets.hpp"
 #include "foldkit/unfold/rearrange.hpp"
 #include "foldkit/unfold/search.hpp"
-#include "parallel.hpp"
 
 namespace foldkit::unfold {
 

@@ -13,8 +13,8 @@
 #include <random>
 #include <thread>
 
+#include "foldkit/geom/parallel.hpp"
 #include "foldkit/unfold/mst.hpp"
-#include "parallel.hpp"
 
 namespace foldkit::unfold {
 

@@ -37,12 +37,15 @@ struct PackOptions {
   /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
   /// needs (fewer for many items); 0: none.
   int shaken_orders = 16;
+  /// Orders packed at once; 0: as many as the hardware has. The result does not depend on it.
+  int threads = 0;
   /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
   std::optional<int> max_sheets;
   /// When set, packing stops here with a LayoutError: no input makes it run unbounded.
   std::optional<std::chrono::steady_clock::time_point> deadline;
-  /// Called after each placement with the placements made and the most the packing can make (items
-  /// times the orders it may try; it ends at that count, also when it stops trying orders early).
+  /// Called after each order packed with the placements made and the most the packing can make (items
+  /// times the orders it may try; it ends at that count, also when it stops trying orders early), on
+  /// the calling thread.
   std::function<void(long done, long total)> progress;
 };
 
