@@ -265,7 +265,8 @@ TEST(RenderSvg, ALabelTakesItsReservedLengthWhateverFontTheViewerHas) {
   render_sheets({label_sheet()}, svg);
   const std::string text = slurp(svg);
   EXPECT_NE(text.find("font-family=\"Liberation Sans Narrow\""), std::string::npos);
-  const Text& first = label_sheet().texts.front();
+  const Sheet sheet = label_sheet();
+  const Text& first = sheet.texts.front();
   std::ostringstream length;
   length << "textLength=\"" << first.width_mm << "\" lengthAdjust=\"spacingAndGlyphs\"";
   EXPECT_NE(text.find(length.str()), std::string::npos) << length.str();
