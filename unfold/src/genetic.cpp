@@ -261,9 +261,7 @@ std::vector<RunResult> evolve(const UnfoldContext& ctx, const GaOptions& opt, in
                                     std::chrono::duration<double>(std::max(0.0, opt.time_limit_s)));
   const int runs = static_cast<int>(opt.shares.size());
   std::atomic<bool> cancel{false};
-  int threads =
-      opt.threads > 0 ? opt.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::clamp(threads, 1, std::max(1, runs));
+  const int threads = std::clamp(resolve_threads(opt.threads), 1, std::max(1, runs));
   std::vector<std::unique_ptr<GaRun>> run(runs);
   auto parallel = [&](const auto& job) { run_parallel(runs, threads, job); };
   parallel([&](int r) {

@@ -278,8 +278,7 @@ class Portfolio {
         start_(Clock::now()),
         caller_(std::this_thread::get_id()),
         walkers_(std::max(1, opt.portfolio)) {
-    const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threads_ = std::min(size(), opt.threads > 0 ? opt.threads : hw);
+    threads_ = std::min(size(), resolve_threads(opt.threads));
   }
 
   int size() const { return static_cast<int>(walkers_.size()); }
