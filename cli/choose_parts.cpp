@@ -64,7 +64,8 @@ bool same_parts(const unfold::Unfolding& a, const unfold::Unfolding& b) {
 
 struct Candidate {
   unfold::PartsResult parts;
-  long sheets = 0;  ///< by the estimate until `layout` is set, then by the layout
+  long sheets = 0;            ///< by the estimate until `layout` is set, then by the layout
+  long estimated_sheets = 0;  ///< by the estimate, 0 before it
   double hull_area = 0;
   std::optional<layout::LayoutResult> layout;
 
@@ -116,16 +117,25 @@ class PartChooser {
     return c;
   }
 
-  // The full layout, with labels and letters.
+  // The full layout, with labels and letters. Tabs that grow to hold labels (tabs_for_labels) take paper
+  // the estimate did not see: where the layout then needs more sheets than estimated, it is laid out
+  // again with plain tabs, and the one with fewer sheets kept: a sheet is worth more than those labels.
   void lay_out(Candidate& c) {
     c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
     c.sheets = sheets_with_pieces(*c.layout);
+    if (!o_.tabs_for_labels || c.estimated_sheets == 0 || c.sheets <= c.estimated_sheets) return;
+    layout::LayoutOptions plain = o_;
+    plain.tabs_for_labels = false;
+    layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(plain, ++layouts_));
+    if (sheets_with_pieces(r) >= c.sheets) return;
+    c.sheets = sheets_with_pieces(r);
+    c.layout = std::move(r);
   }
 
   // The cheap layout (estimate_options): sets c.sheets, returns the area the pieces and tabs take (mm²).
   double estimate(Candidate& c) {
     const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough_, ++layouts_));
-    c.sheets = sheets_with_pieces(r);
+    c.sheets = c.estimated_sheets = sheets_with_pieces(r);
     return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   }
 

@@ -523,6 +523,24 @@ TEST(Layout, TheLabelRemedyIsDecidedByEdgesALabelCanSitBesideNotBySlivers) {
       << " of " << advised.overall.labels;
 }
 
+TEST(Layout, ALabelWithNoClearSpotOnItsFaceGetsItsSeamsTabWithRoomForIt) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  // A1 paper: the same pieces with and without, none cut smaller to fit.
+  LayoutOptions o = at_size(150);
+  o.paper_mm = {594, 841};
+  const LayoutResult with = layout_sheets(ex.unfolding, o);
+  o.tabs_for_labels = false;
+  const LayoutResult without = layout_sheets(ex.unfolding, o);
+  ASSERT_GT(without.labels_without_room, 10);
+  EXPECT_LT(with.labels_without_room, 0.8 * without.labels_without_room)
+      << with.labels_without_room << " against " << without.labels_without_room;
+  const auto crossing_or_touching = [](const LayoutResult& r) {
+    return r.label_audit.crossing_lines + r.label_audit.touching;
+  };
+  EXPECT_LT(crossing_or_touching(with), crossing_or_touching(without));
+  EXPECT_LE(with.overall.dropped_tabs, without.overall.dropped_tabs) << "no seam loses its tab for a label";
+}
+
 TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
   const auto& ex = test::unfolded_example("fish_350.obj");
   LayoutOptions o = at_size(200);

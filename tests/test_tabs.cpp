@@ -152,6 +152,34 @@ TEST(Tabs, TheWidthsTriedNarrowFromTheEdgesShareDownToTheLeast) {
   EXPECT_EQ(tab_widths_to_try(1, o), std::vector<double>{o.min_width_mm}) << "never below the least width";
 }
 
+TEST(Tabs, ATabWantedForItsLabelIsAsWideAsTheLabelWhereItsEdgeAloneWouldMakeItNarrower) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  // Small: many edges shorter than a label-wide tab needs.
+  const auto pieces = scaled_pieces(ex.unfolding, 90 / ex.unfolding.model_extent);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const std::vector<int> wanted(seams.size(), 0);
+  TabOptions o;
+  o.label_width_mm = 2.6;
+  // Tabs on the wanted side of edges whose share (width_per_length) is less than the label needs.
+  const auto label_wide_share = [&](const TabOptions& options) {
+    const TabPlan plan = plan_tabs(pieces, seams, options, {}, wanted);
+    int short_edges = 0, label_wide = 0;
+    for (const auto& tab : plan.tab_of_seam) {
+      if (!tab || tab->side != 0) continue;
+      if (options.width_per_length * norm(tab->quad_mm[3] - tab->quad_mm[0]) >= o.label_width_mm) continue;
+      ++short_edges;
+      label_wide += tab->width_mm >= o.label_width_mm - 1e-9;
+    }
+    return std::pair(label_wide, short_edges);
+  };
+  const auto [wide, short_edges] = label_wide_share(o);
+  ASSERT_GT(short_edges, 20);
+  EXPECT_GT(wide, short_edges / 2) << wide << " of " << short_edges;
+  TabOptions plain = o;
+  plain.label_width_mm = 0;
+  EXPECT_LT(label_wide_share(plain).first, short_edges / 10) << "without the floor they stay narrow";
+}
+
 TEST(Tabs, ASeamWhoseSidesMeetAtANarrowMouthIsASlit) {
   // A notch cut into a piece's outline: edge 1 runs into the tip at (5, 10), edge 2 back out.
   auto notch = [](double mouth_mm) {

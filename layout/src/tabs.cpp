@@ -306,9 +306,12 @@ class TabPlanner {
     const double length = norm(e.b - e.a);
     if (length <= 0) return std::nullopt;
     const EdgeCorners free = corners(s, index);
-    const std::vector<double> widths = tab_widths_to_try(length, o_);
-    // A tab wanted for its label keeps its full base up to its outer side: steep ends first.
+    std::vector<double> widths = tab_widths_to_try(length, o_);
+    // A tab wanted for its label keeps its full base up to its outer side (steep ends first) and is
+    // first tried wide enough for it.
     const bool steep_first = wanted_side(index) == k;
+    const double label_width = std::min(o_.label_width_mm, o_.width_mm);
+    if (steep_first && label_width > widths.front()) widths.insert(widths.begin(), label_width);
     for (double w : widths)
       if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w, steep_first))
         return tab;

@@ -44,6 +44,9 @@ struct LayoutOptions {
   FoldOptions fold;
 
   bool tabs = true;  ///< one glue tab per seam pair
+  /// Where a label finds no clear spot on its face, its seam's tab moves to its side and takes steep
+  /// ends and the label's height, so that the label goes on the tab. The tabs take a little more paper.
+  bool tabs_for_labels = true;
   /// Tab width and shape; a min_width_mm above width_mm counts as width_mm.
   TabOptions tab;
 

@@ -27,6 +27,9 @@ struct TabOptions {
   double max_slant_rad = 0.25 * std::numbers::pi;  ///< angle between edge and slanted end at most
   /// Tabs are at most this fraction of their edge's length wide, so short edges get narrow tabs.
   double width_per_length = 0.45;
+  /// A tab wanted for its label (plan_tabs' wanted_sides) is first tried at least this wide (never
+  /// above width_mm), where its edge's length alone would make it too narrow for the label; 0: no floor.
+  double label_width_mm = 0;
 };
 
 /// A placed tab, in its piece's frame (mm, y up).
