@@ -159,19 +159,25 @@ TabPlan plan_draft_tabs(const Draft& d, const LayoutOptions& o, std::span<const 
   return plan_tabs(d.pieces, d.seams, tab_options_in_use(o), by_number, wanted);
 }
 
-// Marks in `wanted` the tab sides of the seams whose label on a side finds no clear spot on its face
-// (open_tabs_for_crowded_labels); false when none is new.
+bool has_clear_spot(const Label& l) {
+  return !l.over_fold && !l.crowded;
+}
+
+// Marks in `wanted` the tab side of each seam with a label that finds no clear spot on its face
+// (open_tabs_for_crowded_labels): its own side, where the seam's tab is already there or the mate's
+// label has a clear spot (on its face, or on the tab it gives up: it had not tried its face); false when
+// none is new.
 bool want_tabs_for_crowded_labels(const Draft& d, std::vector<int>& wanted) {
   std::vector<std::array<const Label*, 2>> of_seam(d.seams.size(), {nullptr, nullptr});
   for (const Label& l : d.labels)
     of_seam[l.seam.index()][l.side] = &l;
-  const auto clear_on_face = [](const Label* l) { return l && !l->on_tab && !l->over_fold && !l->crowded; };
   bool any = false;
   for (const Label& l : d.labels) {
     const std::size_t s = l.seam.index();
     const std::optional<Tab>& tab = d.tabs.tab_of_seam[s];
-    if (l.on_tab || !(l.over_fold || l.crowded) || !tab || wanted[s] == l.side) continue;
-    if (tab->side != l.side && !clear_on_face(of_seam[s][1 - l.side])) continue;
+    if (has_clear_spot(l) || !tab || wanted[s] == l.side) continue;
+    const Label* mate = of_seam[s][1 - l.side];
+    if (tab->side != l.side && !(mate && has_clear_spot(*mate))) continue;
     wanted[s] = l.side;
     any = true;
   }
@@ -180,7 +186,7 @@ bool want_tabs_for_crowded_labels(const Draft& d, std::vector<int>& wanted) {
 
 int labels_without_clear_spot(std::span<const Label> labels) {
   return static_cast<int>(
-      std::count_if(labels.begin(), labels.end(), [](const Label& l) { return l.over_fold || l.crowded; }));
+      std::count_if(labels.begin(), labels.end(), [](const Label& l) { return !has_clear_spot(l); }));
 }
 
 // Tabs are planned before the labels, with gentle ends: a tab on a short edge is then nearly a triangle,
