@@ -48,7 +48,6 @@ void validate(const LayoutOptions& o) {
                       format_mm(o.paper_mm.y) + " mm sheet");
 }
 
-// The tab options as planned: the least width never above the width asked.
 // The label options as placed: arrows sit along the edges, so the labels are lifted above them.
 LabelOptions label_options_in_use(const LayoutOptions& o) {
   LabelOptions l = o.label;
@@ -56,6 +55,7 @@ LabelOptions label_options_in_use(const LayoutOptions& o) {
   return l;
 }
 
+// The tab options as planned: the least width never above the width asked.
 TabOptions tab_options_in_use(const LayoutOptions& o) {
   TabOptions t = o.tab;
   t.min_width_mm = std::min(t.min_width_mm, t.width_mm);
@@ -191,8 +191,8 @@ int labels_without_clear_spot(std::span<const Label> labels) {
 
 // Tabs are planned before the labels, with gentle ends: a tab on a short edge is then nearly a triangle,
 // with no room for a label. Where a label finds no clear spot on its face, the seam's tab is wanted on
-// its side (moved there when the mate's label has a clear spot on its own face) and for its label: steep
-// ends, its whole base up to its outer side, the label's height. The tabs are planned again and the
+// its side (want_tabs_for_crowded_labels) and for its label: steep ends, its whole base up to its outer
+// side, the label's height. The tabs are planned again and the
 // labels placed again, kept when no seam loses its tab and fewer labels are left without a clear spot.
 // (A second round gains next to nothing: 431 to 430 such labels over ten 350-500-face meshes.)
 void open_tabs_for_crowded_labels(Draft& d, const LayoutOptions& o) {
