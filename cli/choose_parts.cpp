@@ -64,8 +64,9 @@ bool same_parts(const unfold::Unfolding& a, const unfold::Unfolding& b) {
 
 struct Candidate {
   unfold::PartsResult parts;
-  long sheets = 0;            ///< by the estimate until `layout` is set, then by the layout
-  long estimated_sheets = 0;  ///< by the estimate, 0 before it
+  long sheets = 0;                ///< by the estimate until `layout` is set, then by the layout
+  long estimated_sheets = 0;      ///< by the estimate, 0 before it
+  int estimated_without_tab = 0;  ///< seams without a glue tab, by the estimate
   double hull_area = 0;
   std::optional<layout::LayoutResult> layout;
 
@@ -136,6 +137,7 @@ class PartChooser {
   double estimate(Candidate& c) {
     const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough_, ++layouts_));
     c.sheets = c.estimated_sheets = sheets_with_pieces(r);
+    c.estimated_without_tab = r.overall.dropped_tabs;
     return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   }
 
@@ -285,8 +287,8 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long b
 
 // The best estimate gets its full layout; while the next estimate could still beat the best full
 // layout so far (the labels can cost a sheet), that one gets a full layout too (at most three in
-// all, two for large meshes), and the best full layout wins.
-Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate> candidates, bool large) {
+// all, two for large meshes), and the best full layout wins; the others stay in `candidates`.
+Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate>& candidates, bool large) {
   const std::size_t full_layouts = large ? 2 : 3;
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
@@ -302,7 +304,29 @@ Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate> candidat
     chooser.lay_out(candidates[k]);
     if (candidates[k].rank() < candidates[0].rank()) std::swap(candidates[0], candidates[k]);
   }
-  return std::move(candidates[0]);
+  Candidate best = std::move(candidates[0]);
+  candidates.erase(candidates.begin());
+  return best;
+}
+
+// Partitions often tie on sheets and parts yet differ in seams without a glue tab: a part boundary
+// through a slit gives each of its sides room for one. The tied estimate with the fewest replaces
+// `best` when its full layout keeps the sheets and parts and leaves fewer seams without a tab. Asked
+// after the last sheet's re-split, which packing luck decides from either, so that it never costs a
+// sheet.
+void fewer_seams_without_tab(PartChooser& chooser, std::vector<Candidate>& others, Candidate& best) {
+  const int best_parts = best.parts.unfolding.piece_count;
+  const int best_without = best.layout ? best.layout->overall.dropped_tabs : 0;
+  Candidate* tie = nullptr;
+  for (Candidate& c : others)
+    if (c.sheets == best.sheets && c.parts.unfolding.piece_count == best_parts &&
+        c.estimated_without_tab < (tie ? tie->estimated_without_tab : best.estimated_without_tab))
+      tie = &c;
+  if (!tie) return;
+  if (!tie->layout) chooser.lay_out(*tie);
+  if (tie->sheets == best.sheets && tie->parts.unfolding.piece_count == best_parts &&
+      tie->layout->overall.dropped_tabs < best_without)
+    best = std::move(*tie);
 }
 
 }  // namespace
@@ -326,8 +350,11 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   std::vector<Candidate> candidates;
   candidates.push_back(std::move(first));
   try_partitions(chooser, o, bound, large, trial_time, candidates);
-  Candidate best = best_full_layout(chooser, std::move(candidates), large);
-  if (!large) resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
+  Candidate best = best_full_layout(chooser, candidates, large);
+  if (!large) {
+    resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
+    fewer_seams_without_tab(chooser, candidates, best);
+  }
   const int untouched = u.piece_count - best.parts.split_pieces;
   return {std::move(best.parts.unfolding), best.parts.split_pieces,
           best.parts.unfolding.piece_count - untouched, std::move(best.layout)};

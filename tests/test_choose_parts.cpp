@@ -44,6 +44,32 @@ TEST(ChooseParts, SmallerPartsAreKeptWhenTheySaveASheet) {
     }
 }
 
+TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWithoutATabIsKept) {
+  // Bob at 150 mm: partitions into as many parts on as many sheets differ in where their part
+  // boundaries run, some through slits (whose sides then both have room for a tab).
+  const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  ASSERT_TRUE(chosen.layout);
+  const long sheets = sheets_with_pieces(*chosen.layout);
+  int ties = 0;
+  for (const double fraction : {1.0, 0.85, 0.7, 0.5, 0.35})
+    for (const auto growth : {unfold::PartGrowth::Tree, unfold::PartGrowth::Round}) {
+      unfold::PartOptions po = largest_parts(ex.unfolding, o);
+      po.room_fraction = fraction;
+      po.growth = growth;
+      const unfold::PartsResult parts = unfold::split_into_parts(ex.mesh, ex.unfolding, po);
+      const layout::LayoutResult r = layout::layout_sheets(parts.unfolding, o);
+      if (sheets_with_pieces(r) != sheets || parts.unfolding.piece_count != chosen.unfolding.piece_count)
+        continue;
+      ++ties;
+      EXPECT_LE(chosen.layout->overall.dropped_tabs, r.overall.dropped_tabs)
+          << "parts grown to " << fraction << " of the room";
+    }
+  EXPECT_GT(ties, 1) << "several partitions tie on sheets and parts";
+}
+
 TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {
   const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
