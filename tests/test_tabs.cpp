@@ -201,6 +201,26 @@ TEST(Tabs, ASeamWhoseSidesMeetAtANarrowMouthIsASlit) {
   EXPECT_FALSE(is_narrow_slit(notch(1), seam, TabOptions{})) << "sides that are not neighbours";
 }
 
+TEST(Tabs, TwoSidesFacingEachOtherCloserThanATabAlongTheWholeEdgeAreASlitToo) {
+  // A slot cut down into a piece from its top: edge 3 runs down its right side, edge 5 up its left.
+  auto slot = [](double width_mm) {
+    ScaledPiece p;
+    p.index = 0;
+    const double left = 5 - 0.5 * width_mm, right = 5 + 0.5 * width_mm;
+    const std::vector<Vec2> corners = {{0, 0},     {10, 0},   {10, 20},   {right, 20},
+                                       {right, 5}, {left, 5}, {left, 20}, {0, 20}};
+    OutlineLoop loop;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
+    p.outline_mm = {loop};
+    return std::vector<ScaledPiece>{p};
+  };
+  Seam seam;
+  seam.sides = {SeamSide{0, 0, 3}, SeamSide{0, 0, 5}};
+  EXPECT_TRUE(is_narrow_slit(slot(1), seam, TabOptions{})) << "1 mm apart from end to end";
+  EXPECT_FALSE(is_narrow_slit(slot(4), seam, TabOptions{})) << "a wide slot takes a tab";
+}
+
 // The default unfolding (one search piece, split to fit A4 at 150 mm) leaves few seams without a tab.
 // Most of those left are slits: both sides meet at a vertex of small angular defect, and even at the
 // slit's mouth the gap is narrower than the narrowest tab; no tab shape fits there.

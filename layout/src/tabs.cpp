@@ -405,15 +405,15 @@ bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const
   constexpr double kSlitMouthSpare_mm = 0.5;
   const SeamSide& a = seam.sides[0];
   const SeamSide& b = seam.sides[1];
-  if (a.piece < 0 || a.piece != b.piece || a.loop != b.loop) return false;
-  const OutlineLoop& loop = pieces[a.piece].outline_mm[a.loop];
-  const int n = static_cast<int>(loop.size());
-  const bool a_first = (a.index + 1) % n == b.index;
-  if (!a_first && (b.index + 1) % n != a.index) return false;
-  const OutlineEdge& first = loop[a_first ? a.index : b.index];
-  const OutlineEdge& second = loop[a_first ? b.index : a.index];
-  // first ends where second starts (the slit's tip): the gap between their far ends is the mouth.
-  return norm(first.a - second.b) < o.min_width_mm + kSlitMouthSpare_mm;
+  if (a.piece < 0 || a.piece != b.piece) return false;
+  const OutlineEdge& on_a = edge_of(pieces, a);
+  const OutlineEdge& on_b = edge_of(pieces, b);
+  // Each side runs along the outline with the piece on its left, so the mate runs the other way: a's
+  // start and b's end are the two copies of one end of the edge. Closer than a tab needs at both ends
+  // (at a slit's tip one pair coincides), the two sides are that close all along, and no tab fits
+  // between them.
+  const double limit = o.min_width_mm + kSlitMouthSpare_mm;
+  return norm(on_a.a - on_b.b) < limit && norm(on_a.b - on_b.a) < limit;
 }
 
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,

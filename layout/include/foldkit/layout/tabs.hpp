@@ -56,9 +56,10 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
 /// width_per_length of the edge), then narrower by steps, down to min_width_mm (always the last).
 std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& options);
 
-/// Whether `seam` is a narrow slit: its two sides are neighbours on one outline, meeting at the slit's
-/// tip, and their far ends are closer than a tab of min_width_mm (with a little to spare) needs. No tab
-/// fits there; the maker closes it edge to edge.
+/// Whether `seam` is a narrow slit: its two sides lie in one piece, and the two copies of each end of
+/// its edge are closer than a tab of min_width_mm (with a little to spare) needs: neighbours on one
+/// outline meeting at the slit's tip with a narrow mouth, or sides facing each other that close along
+/// the whole edge. No tab fits there; the maker closes it edge to edge.
 bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& options);
 
 /// The trapezoid on the outer side of outline edge a->b (piece on the left) of width w with slanted
