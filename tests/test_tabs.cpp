@@ -180,18 +180,26 @@ TEST(Tabs, ATabWantedForItsLabelIsAsWideAsTheLabelWhereItsEdgeAloneWouldMakeItNa
   EXPECT_LT(label_wide_share(plain).first, short_edges / 10) << "without the floor they stay narrow";
 }
 
+namespace {
+
+// One piece whose outline runs through `corners`, edge i from corner i to the next.
+std::vector<ScaledPiece> piece_with_outline(const std::vector<Vec2>& corners) {
+  ScaledPiece p;
+  p.index = 0;
+  OutlineLoop loop;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
+  p.outline_mm = {loop};
+  return {p};
+}
+
+}  // namespace
+
 TEST(Tabs, ASeamWhoseSidesMeetAtANarrowMouthIsASlit) {
   // A notch cut into a piece's outline: edge 1 runs into the tip at (5, 10), edge 2 back out.
   auto notch = [](double mouth_mm) {
-    ScaledPiece p;
-    p.index = 0;
-    const std::vector<Vec2> corners = {
-        {0, 0}, {5 - 0.5 * mouth_mm, 0}, {5, 10}, {5 + 0.5 * mouth_mm, 0}, {10, 0}, {10, 20}, {0, 20}};
-    OutlineLoop loop;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
-    p.outline_mm = {loop};
-    return std::vector<ScaledPiece>{p};
+    return piece_with_outline(
+        {{0, 0}, {5 - 0.5 * mouth_mm, 0}, {5, 10}, {5 + 0.5 * mouth_mm, 0}, {10, 0}, {10, 20}, {0, 20}});
   };
   Seam seam;
   seam.sides = {SeamSide{0, 0, 1}, SeamSide{0, 0, 2}};
@@ -204,16 +212,9 @@ TEST(Tabs, ASeamWhoseSidesMeetAtANarrowMouthIsASlit) {
 TEST(Tabs, TwoSidesFacingEachOtherCloserThanATabAlongTheWholeEdgeAreASlitToo) {
   // A slot cut down into a piece from its top: edge 3 runs down its right side, edge 5 up its left.
   auto slot = [](double width_mm) {
-    ScaledPiece p;
-    p.index = 0;
     const double left = 5 - 0.5 * width_mm, right = 5 + 0.5 * width_mm;
-    const std::vector<Vec2> corners = {{0, 0},     {10, 0},   {10, 20},   {right, 20},
-                                       {right, 5}, {left, 5}, {left, 20}, {0, 20}};
-    OutlineLoop loop;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
-    p.outline_mm = {loop};
-    return std::vector<ScaledPiece>{p};
+    return piece_with_outline(
+        {{0, 0}, {10, 0}, {10, 20}, {right, 20}, {right, 5}, {left, 5}, {left, 20}, {0, 20}});
   };
   Seam seam;
   seam.sides = {SeamSide{0, 0, 3}, SeamSide{0, 0, 5}};
