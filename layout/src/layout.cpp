@@ -532,7 +532,7 @@ LabelRoom label_room(const Draft& d, const unfold::Unfolding& u) {
   std::vector<double> factors;
   LabelRoom room;
   for (const Label& label : d.labels) {
-    if (!label.crowded && !label.over_fold) continue;
+    if (has_clear_spot(label)) continue;
     ++room.without_room;
     const SeamSide& side = d.seams[label.seam.index()].sides[label.side];
     const ScaledPiece& piece = d.pieces[side.piece];
