@@ -118,19 +118,26 @@ class PartChooser {
     return c;
   }
 
-  // The full layout, with labels and letters. Tabs that grow to hold labels (tabs_for_labels) take paper
-  // the estimate did not see: where the layout then needs more sheets than estimated, it is laid out
-  // again with plain tabs, and the one with fewer sheets kept: a sheet is worth more than those labels.
+  // The full layout, with labels and letters. Tabs that grow or split to hold labels (tabs_for_labels)
+  // take paper the estimate did not see: where the layout then needs more sheets than estimated, it is
+  // laid out again with whole tabs, then with plain tabs, and the one with fewest sheets kept: a sheet is
+  // worth more than those labels.
   void lay_out(Candidate& c) {
     c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
     c.sheets = sheets_with_pieces(*c.layout);
-    if (!o_.tabs_for_labels || c.estimated_sheets == 0 || c.sheets <= c.estimated_sheets) return;
-    layout::LayoutOptions plain = o_;
+    if (!o_.tabs_for_labels || c.estimated_sheets == 0) return;
+    layout::LayoutOptions whole = o_;
+    whole.split_tabs_for_labels = false;
+    layout::LayoutOptions plain = whole;
     plain.tabs_for_labels = false;
-    layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(plain, ++layouts_));
-    if (sheets_with_pieces(r) >= c.sheets) return;
-    c.sheets = sheets_with_pieces(r);
-    c.layout = std::move(r);
+    for (const layout::LayoutOptions* fewer_tabs : {&whole, &plain}) {
+      if (c.sheets <= c.estimated_sheets) return;
+      if (fewer_tabs == &whole && !o_.split_tabs_for_labels) continue;
+      layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(*fewer_tabs, ++layouts_));
+      if (sheets_with_pieces(r) >= c.sheets) continue;
+      c.sheets = sheets_with_pieces(r);
+      c.layout = std::move(r);
+    }
   }
 
   // The cheap layout (estimate_options): sets c.sheets, returns the area the pieces and tabs take (mm²).

@@ -44,6 +44,7 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"piece_count", s.pieces},
           {"tab_count", s.tabs},
           {"dropped_tab_count", s.dropped_tabs},
+          {"split_tab_count", s.split_tabs},
           {"label_count", s.labels},
           {"min_label_mm", s.min_label_mm},
           {"piece_area_mm2", s.piece_area_mm2},

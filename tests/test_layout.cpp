@@ -123,7 +123,9 @@ TEST(Layout, NoTabOverlapsAnyPieceOrAnotherTabOnRealMeshes) {
       }
     }
     EXPECT_EQ(tabs, r.overall.tabs) << name;
-    EXPECT_EQ(r.overall.tabs + r.overall.dropped_tabs, ex.unfolding.seam_count()) << name;
+    // A split tab is two tabs on one seam.
+    EXPECT_EQ(r.overall.tabs - r.overall.split_tabs + r.overall.dropped_tabs, ex.unfolding.seam_count())
+        << name;
   }
 }
 
@@ -574,4 +576,19 @@ TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
       std::count_if(seen.begin(), seen.end(), [](const LayoutProgress& p) { return p.stage == "packing"; });
   EXPECT_GT(packing_reports, ex.unfolding.piece_count) << "packing reports as it places, not only at the end";
   EXPECT_GT(r.sheets.size(), 1u);
+}
+
+TEST(Layout, ALongSeamWhoseOneTabHoldsOneLabelWhileTheOtherHasNoRoomGetsItsTabSplitInTwo) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  LayoutOptions o = at_size(100);  // small: many faces too narrow for a label beside their long edges
+  o.paper_mm = {594, 841};         // A1: the same pieces with and without, none cut smaller to fit
+  const LayoutResult with = layout_sheets(ex.unfolding, o);
+  o.split_tabs_for_labels = false;
+  const LayoutResult without = layout_sheets(ex.unfolding, o);
+  EXPECT_EQ(without.overall.split_tabs, 0);
+  ASSERT_GT(with.overall.split_tabs, 0);
+  EXPECT_LT(with.labels_without_room, without.labels_without_room);
+  EXPECT_LE(with.label_audit.crossing_lines + with.label_audit.touching,
+            without.label_audit.crossing_lines + without.label_audit.touching);
+  EXPECT_LE(with.overall.dropped_tabs, without.overall.dropped_tabs) << "no seam loses its tab for a label";
 }

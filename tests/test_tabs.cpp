@@ -248,3 +248,44 @@ TEST(Tabs, OnTheDefaultUnfoldingOfRealExamplesFewTabsAreDropped) {
     EXPECT_LT(others, 0.08) << name;
   }
 }
+
+TEST(Tabs, ASplitTabPutsOneLabelWideHalfOnEachSideAlongOppositeHalvesOfTheEdge) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 160 / ex.unfolding.model_extent);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const std::vector<int> wanted(seams.size(), kSplitTab);
+  TabOptions o;
+  o.label_width_mm = 2.6;
+  const TabPlan plan = plan_tabs(pieces, seams, o, {}, wanted);
+  int split = 0;
+  for (std::size_t s = 0; s < seams.size(); ++s) {
+    if (!plan.is_split(s)) continue;
+    ++split;
+    const Tab* halves[2] = {plan.on_side(s, 0), plan.on_side(s, 1)};
+    ASSERT_TRUE(halves[0] && halves[1]) << "seam " << s;
+    int from_starts = 0;
+    for (int k = 0; k < 2; ++k) {
+      const SeamSide& at = seams[s].sides[k];
+      const OutlineEdge& e = pieces[at.piece].outline_mm[at.loop][at.index];
+      const Vec2 base_a = halves[k]->quad_mm[0], base_b = halves[k]->quad_mm[3];
+      EXPECT_GE(halves[k]->width_mm, o.label_width_mm * 0.95 - 1e-9);
+      // Each side's half starts at its edge's start or ends at its end.
+      const bool from_start = norm(base_a - e.a) < 1e-9;
+      EXPECT_TRUE(from_start || norm(base_b - e.b) < 1e-9) << "seam " << s;
+      EXPECT_NEAR(norm(base_b - base_a), 0.5 * norm(e.b - e.a), 1e-6);
+      from_starts += from_start ? 1 : 0;
+    }
+    // The sides run opposite ways: both from their starts (or both to their ends) is opposite halves.
+    EXPECT_NE(from_starts, 1) << "seam " << s << ": the halves lie along opposite halves of the edge";
+  }
+  EXPECT_GT(split, static_cast<int>(seams.size()) / 2) << split << " of " << seams.size();
+  // Every tab, halves included, stays clear of the others in its piece.
+  const std::vector<const Tab*> all = plan.all();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      if (all[i]->piece != all[j]->piece) continue;
+      const std::vector<Polygon> a{all[i]->quad_mm}, b{all[j]->quad_mm};
+      ASSERT_LT(intersection_area(a, b), 1e-4)
+          << "seams " << all[i]->seam.index() << " and " << all[j]->seam.index();
+    }
+}

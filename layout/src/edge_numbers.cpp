@@ -310,10 +310,8 @@ class LabelPlacer {
 
   void collect_sides(const TabPlan& tabs, const SeamTexts& texts) {
     for (std::size_t s = 0; s < seams_.size(); ++s) {
-      // A pointer into the plan (a conditional with nullopt would copy the tab into a temporary).
-      const Tab* tab = s < tabs.tab_of_seam.size() && tabs.tab_of_seam[s] ? &*tabs.tab_of_seam[s] : nullptr;
       // The side with a tab first: its label has room there for the step mark.
-      const int first = tab && tab->side == 1 ? 1 : 0;
+      const int first = !tabs.on_side(s, 0) && tabs.on_side(s, 1) ? 1 : 0;
       for (int k : {first, 1 - first}) {
         const SeamSide& at = seams_[s].sides[k];
         if (at.piece < 0) continue;
@@ -324,7 +322,7 @@ class LabelPlacer {
         side.edge = &pieces_[at.piece].outline_mm[at.loop][at.index];
         side.length_mm = norm(side.edge->b - side.edge->a);
         if (!(side.length_mm > 0)) continue;
-        if (tab && tab->side == k) side.tab = tab;
+        side.tab = tabs.on_side(s, k);
         side.step_side = k == first;
         side.full = texts.full[s][k];
         side.brief = s < texts.brief.size() ? texts.brief[s][k] : side.full;

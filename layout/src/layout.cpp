@@ -90,6 +90,7 @@ struct Draft {
   std::vector<int> order;    // assembly order (seam indices), empty without hints
   std::vector<std::vector<FoldLine>> folds;
   TabPlan tabs;
+  std::vector<int> tab_sides;  // per seam, the tab side plan_tabs was asked for (-1: its choice), or empty
   std::vector<Label> labels;
   std::vector<Arrow> arrows;
   std::vector<std::string> letters;  // per piece
@@ -163,14 +164,20 @@ bool has_clear_spot(const Label& l) {
   return !l.over_fold && !l.crowded;
 }
 
+// Per seam, its labels by side (nullptr where a side has none).
+std::vector<std::array<const Label*, 2>> labels_by_seam(const Draft& d) {
+  std::vector<std::array<const Label*, 2>> of_seam(d.seams.size(), {nullptr, nullptr});
+  for (const Label& l : d.labels)
+    of_seam[l.seam.index()][l.side] = &l;
+  return of_seam;
+}
+
 // Marks in `wanted` the tab side of each seam with a label that finds no clear spot on its face
 // (open_tabs_for_crowded_labels): its own side, where the seam's tab is already there or the mate's
 // label has a clear spot (on its face, or on the tab it gives up: it had not tried its face); false when
 // none is new.
 bool want_tabs_for_crowded_labels(const Draft& d, std::vector<int>& wanted) {
-  std::vector<std::array<const Label*, 2>> of_seam(d.seams.size(), {nullptr, nullptr});
-  for (const Label& l : d.labels)
-    of_seam[l.seam.index()][l.side] = &l;
+  const std::vector<std::array<const Label*, 2>> of_seam = labels_by_seam(d);
   bool any = false;
   for (const Label& l : d.labels) {
     const std::size_t s = l.seam.index();
@@ -189,6 +196,21 @@ int labels_without_clear_spot(std::span<const Label> labels) {
       std::count_if(labels.begin(), labels.end(), [](const Label& l) { return !has_clear_spot(l); }));
 }
 
+// Plans the tabs again with `wanted` and places the labels again; keeps both when no seam loses its tab
+// and fewer labels are left without a clear spot, else leaves the draft as it was.
+void keep_tabs_if_labels_gain(Draft& d, const LayoutOptions& o, std::vector<int> wanted) {
+  TabPlan replanned = plan_draft_tabs(d, o, wanted);
+  if (replanned.dropped.size() > d.tabs.dropped.size()) return;
+  TabPlan kept = std::exchange(d.tabs, std::move(replanned));
+  std::vector<Label> again = place_draft_labels(d, seam_texts(d));
+  if (labels_without_clear_spot(again) < labels_without_clear_spot(d.labels)) {
+    d.labels = std::move(again);
+    d.tab_sides = std::move(wanted);
+  } else {
+    d.tabs = std::move(kept);
+  }
+}
+
 // Tabs are planned before the labels, with gentle ends: a tab on a short edge is then nearly a triangle,
 // with no room for a label. Where a label finds no clear spot on its face, the seam's tab is wanted on
 // its side (want_tabs_for_crowded_labels) and for its label: steep ends, its whole base up to its outer
@@ -197,16 +219,53 @@ int labels_without_clear_spot(std::span<const Label> labels) {
 // (A second round gains next to nothing: 431 to 430 such labels over ten 350-500-face meshes.)
 void open_tabs_for_crowded_labels(Draft& d, const LayoutOptions& o) {
   std::vector<int> wanted = tab_sides_wanted(d, o);
-  if (!want_tabs_for_crowded_labels(d, wanted)) return;
-  TabPlan steeper = plan_draft_tabs(d, o, wanted);
-  if (steeper.dropped.size() > d.tabs.dropped.size()) return;
-  TabPlan gentle = std::exchange(d.tabs, std::move(steeper));
-  std::vector<Label> again = place_draft_labels(d, seam_texts(d));
-  if (labels_without_clear_spot(again) < labels_without_clear_spot(d.labels)) {
-    d.labels = std::move(again);
-  } else {
-    d.tabs = std::move(gentle);
+  if (want_tabs_for_crowded_labels(d, wanted)) keep_tabs_if_labels_gain(d, o, std::move(wanted));
+}
+
+// Whether an edge of `length_mm` holds two labels of `texts` at the least size, each on a tab along
+// its half of the edge: the label, its clearance at both ends, and the steepest ends of a tab as high as
+// the label needs (TabOptions::label_width_mm).
+bool halves_hold_labels(double length_mm, const std::array<std::string, 2>& texts, const LayoutOptions& o) {
+  const LabelOptions label = label_options_in_use(o);
+  const double tab_height_mm = tab_options_in_use(o).label_width_mm;
+  const double ends_mm = 2 * tab_height_mm / std::tan(kSteepestTabSlant_rad);
+  double widest_mm = 0;
+  for (const std::string& text : texts)
+    widest_mm = std::max(widest_mm, label_width_mm(text, label.min_mm, label));
+  return length_mm / 2 >= widest_mm + 2 * label.clearance_mm + ends_mm;
+}
+
+// Marks kSplitTab in `wanted` for each seam with a label left without a clear spot whose one tab is on
+// the mate's side and carries the mate's label (or the mate has no clear spot either): moving the tab
+// would only move the problem, two halves give each label its own tab. Only where the edge holds both
+// labels on halves (halves_hold_labels); false when no seam qualifies.
+bool want_split_tabs(const Draft& d, const LayoutOptions& o, std::vector<int>& wanted) {
+  const std::vector<std::array<const Label*, 2>> of_seam = labels_by_seam(d);
+  const SeamTexts texts = seam_texts(d);
+  bool any = false;
+  for (const Label& l : d.labels) {
+    const std::size_t s = l.seam.index();
+    const Label* mate = of_seam[s][1 - l.side];
+    const Tab* tab = d.tabs.on_side(s, 1 - l.side);
+    if (has_clear_spot(l) || !mate || !tab || d.tabs.is_split(s) || wanted[s] == kSplitTab) continue;
+    if (!mate->on_tab && has_clear_spot(*mate)) continue;
+    const SeamSide& at = d.seams[s].sides[l.side];
+    const OutlineEdge& e = d.pieces[at.piece].outline_mm[at.loop][at.index];
+    if (!halves_hold_labels(norm(e.b - e.a), texts.brief[s], o)) continue;
+    wanted[s] = kSplitTab;
+    any = true;
   }
+  return any;
+}
+
+// A long edge between two faces too narrow for a label beside it: its one tab holds one label and the
+// other crosses the face's lines. Such tabs are split in two halves (want_split_tabs), the tabs planned
+// again and the labels placed again; kept when no seam loses its tab and fewer labels are left without
+// a clear spot.
+void split_tabs_for_crowded_labels(Draft& d, const LayoutOptions& o) {
+  std::vector<int> wanted = d.tab_sides;
+  wanted.resize(d.seams.size(), -1);
+  if (want_split_tabs(d, o, wanted)) keep_tabs_if_labels_gain(d, o, std::move(wanted));
 }
 
 Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
@@ -226,7 +285,8 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   report(o, "drawing", 3, kSteps);
 
   if (o.tabs) {
-    d.tabs = plan_draft_tabs(d, o, tab_sides_wanted(d, o));
+    d.tab_sides = tab_sides_wanted(d, o);
+    d.tabs = plan_draft_tabs(d, o, d.tab_sides);
   } else {
     d.tabs.tab_of_seam.resize(d.seams.size());
   }
@@ -266,7 +326,10 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
     // The sheets are not known yet: the labels are placed without the mate's sheet, and placed again
     // where packing puts a mate on another sheet (settle_labels).
     d.labels = place_draft_labels(d, seam_texts(d));
-    if (o.tabs && o.tabs_for_labels) open_tabs_for_crowded_labels(d, o);
+    if (o.tabs && o.tabs_for_labels) {
+      open_tabs_for_crowded_labels(d, o);
+      if (o.split_tabs_for_labels) split_tabs_for_crowded_labels(d, o);
+    }
   }
   report(o, "drawing", kSteps, kSteps);
   return d;
@@ -279,8 +342,8 @@ std::vector<PackItem> pack_items_of(const Draft& d, Vec2 room) {
     std::vector<Polygon> parts;
     for (const Triangle2& t : d.pieces[p].triangles_mm)
       parts.push_back({t[0], t[1], t[2]});
-    for (const auto& tab : d.tabs.tab_of_seam)
-      if (tab && tab->piece == static_cast<int>(p)) parts.push_back(tab->quad_mm);
+    for (const Tab* tab : d.tabs.all())
+      if (tab->piece == static_cast<int>(p)) parts.push_back(tab->quad_mm);
     // A label squeezed onto a tiny face may stick out of it: it must still stay clear of the
     // neighbours and inside the printable area.
     for (const Label& label : d.labels)
@@ -665,18 +728,17 @@ DraftIndex index_draft(const Draft& d) {
   for (std::size_t p = 0; p < d.pieces.size(); ++p)
     for (const OutlineLoop& loop : d.pieces[p].outline_mm)
       x.tab_at[p].emplace_back(loop.size(), nullptr);
-  for (std::size_t s = 0; s < d.seams.size(); ++s)
-    if (const auto& tab = d.tabs.tab_of_seam[s]) {
-      const SeamSide& side = d.seams[s].sides[tab->side];
-      x.tab_at[side.piece][side.loop][side.index] = &*tab;
-    }
+  for (const Tab* tab : d.tabs.all()) {
+    const SeamSide& side = d.seams[tab->seam.index()].sides[tab->side];
+    x.tab_at[side.piece][side.loop][side.index] = tab;
+  }
   // Labels by piece: emitting them piece by piece must not scan every label for every piece.
   x.labels_of.resize(d.pieces.size());
   for (std::size_t i = 0; i < d.labels.size(); ++i)
     x.labels_of[d.labels[i].piece].push_back(static_cast<int>(i));
   x.tabs_of.resize(d.pieces.size());
-  for (const auto& tab : d.tabs.tab_of_seam)
-    if (tab) x.tabs_of[tab->piece].push_back(&*tab);
+  for (const Tab* tab : d.tabs.all())
+    x.tabs_of[tab->piece].push_back(tab);
   return x;
 }
 
@@ -777,6 +839,7 @@ void total_stats(double printable_mm2, LayoutResult& r) {
     r.overall.pieces += st.pieces;
     r.overall.tabs += st.tabs;
     r.overall.dropped_tabs += st.dropped_tabs;
+    r.overall.split_tabs += st.split_tabs;
     r.overall.labels += st.labels;
     r.overall.piece_area_mm2 += st.piece_area_mm2;
     r.overall.tab_area_mm2 += st.tab_area_mm2;
@@ -830,6 +893,9 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
     const SeamSide& side = d.seams[s.index()].sides[0];
     if (side.piece >= 0) r.sheet_stats[k.packed.placements[side.piece].sheet].dropped_tabs += 1;
   }
+  for (std::size_t s = 0; s < d.seams.size(); ++s)
+    if (d.tabs.is_split(s))
+      r.sheet_stats[k.packed.placements[d.seams[s].sides[0].piece].sheet].split_tabs += 1;
   emit_assembly_blocks(k, paper_h, r.sheets);
   if (o.furniture) emit_furniture(o, r);
   const Box2 area = packing_area(o);

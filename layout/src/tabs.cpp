@@ -121,6 +121,7 @@ class TabPlanner {
         state_(pieces.size()),
         seam_at_(pieces.size()) {
     plan_.tab_of_seam.resize(seams.size());
+    plan_.second_half_of_seam.resize(seams.size());
     settled_.assign(seams.size(), 0);
     for (std::size_t p = 0; p < pieces.size(); ++p) {
       state_[p].triangles = triangle_grid(pieces[p]);
@@ -137,6 +138,9 @@ class TabPlanner {
   // Places the tab of one seam (the preferred side's, or the other side's when that keeps a larger
   // tab) and settles the seam; false when neither side has room.
   bool place(int index) {
+    if (wanted_sides_.size() > static_cast<std::size_t>(index) && wanted_sides_[index] == kSplitTab &&
+        place_split(index))
+      return true;
     const Seam& seam = seams_[index];
     const int first = preferred_side(index, seam);
     std::optional<Tab> tab = try_side(index, first);
@@ -158,7 +162,8 @@ class TabPlanner {
   // keep the swap only when both seams end up with a tab.
   bool repair(int index) {
     for (int other : tabbed_seams_near(index)) {
-      if (!plan_.tab_of_seam[other]) continue;
+      // A split tab stays: it was asked for both of its labels.
+      if (!plan_.tab_of_seam[other] || plan_.is_split(other)) continue;
       const Tab kept = *plan_.tab_of_seam[other];
       remove(other);
       if (place(index)) {
@@ -186,9 +191,53 @@ class TabPlanner {
     return neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
   }
 
-  // The side the caller wants for seam `index`, or -1.
+  // The side the caller wants for seam `index`, or -1 (also where it wants the tab split).
   int wanted_side(int index) const {
-    return static_cast<std::size_t>(index) < wanted_sides_.size() ? wanted_sides_[index] : -1;
+    const int wanted = static_cast<std::size_t>(index) < wanted_sides_.size() ? wanted_sides_[index] : -1;
+    return wanted == 0 || wanted == 1 ? wanted : -1;
+  }
+
+  // A split tab (kSplitTab): side 0 along the first half of its edge and side 1 along the first half of
+  // its own, which is the other half (the sides run opposite ways); failing that both along their second
+  // halves. The first half is recorded before the second is tried: in one part they may meet.
+  bool place_split(int index) {
+    for (bool first_halves : {true, false}) {
+      std::optional<Tab> half = half_tab(index, 0, first_halves);
+      if (!half) continue;
+      half->seam = SeamId{index};
+      record(std::move(*half));
+      std::optional<Tab> other = half_tab(index, 1, first_halves);
+      if (other) {
+        other->seam = SeamId{index};
+        record(std::move(*other), true);
+        settled_[index] = 1;
+        return true;
+      }
+      remove(index);
+    }
+    return false;
+  }
+
+  // Side k's tab along one half of its edge, at least the label's width (label_width_mm) with steep
+  // ends; its end at the middle of the edge is free (the other half's tab lies on the other side).
+  std::optional<Tab> half_tab(int index, int k, bool first_half) const {
+    const SeamSide& s = seams_[index].sides[k];
+    if (s.piece < 0) return std::nullopt;
+    const OutlineEdge& e = edge_of(pieces_, s);
+    const double half_length = 0.5 * norm(e.b - e.a);
+    if (!(half_length > 0)) return std::nullopt;
+    const EdgeCorners free = corners(s, index);
+    const Vec2 mid = (e.a + e.b) * 0.5;
+    const Vec2 p = first_half ? e.a : mid, q = first_half ? mid : e.b;
+    const double lp = first_half ? free.at_a_rad : std::numbers::pi;
+    const double lq = first_half ? std::numbers::pi : free.at_b_rad;
+    const double least = std::max(std::min(o_.label_width_mm, o_.width_mm), o_.min_width_mm);
+    for (double w : tab_widths_to_try(half_length, o_)) {
+      if (w < least - kTolerance) break;
+      if (auto tab = fit_trapezoid(s.piece, k, p, q, lp, lq, w, true)) return tab;
+    }
+    if (auto tab = fit_trapezoid(s.piece, k, p, q, lp, lq, least, true)) return tab;
+    return std::nullopt;
   }
 
   int neighbours_with_tabs(const SeamSide& s) const {
@@ -212,8 +261,9 @@ class TabPlanner {
     return norm(e.b - e.a);
   }
 
-  // The placed tab joins its piece's obstacles and the plan. place() and repair() both record here.
-  void record(Tab tab) {
+  // The placed tab joins its piece's obstacles and the plan (a split tab's second half apart). place()
+  // and repair() both record here.
+  void record(Tab tab, bool second_half = false) {
     const int index = tab.seam.index();
     const SeamSide& s = seams_[index].sides[tab.side];
     PieceState& ps = state_[s.piece];
@@ -221,22 +271,25 @@ class TabPlanner {
     ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
     ps.tab_seam.push_back(index);
     ps.has_tab[s.loop][s.index] = 1;
-    plan_.tab_of_seam[index] = std::move(tab);
+    (second_half ? plan_.second_half_of_seam : plan_.tab_of_seam)[index] = std::move(tab);
   }
 
+  // Takes seam `index`'s tab away, both halves of a split one.
   void remove(int index) {
-    const Tab& tab = *plan_.tab_of_seam[index];
-    const SeamSide& s = seams_[index].sides[tab.side];
-    PieceState& ps = state_[s.piece];
-    for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
-      if (ps.tab_seam[k] == index) {
-        ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
-        ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
-        ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
-        break;
-      }
-    ps.has_tab[s.loop][s.index] = 0;
-    plan_.tab_of_seam[index].reset();
+    for (std::optional<Tab>* placed : {&plan_.tab_of_seam[index], &plan_.second_half_of_seam[index]}) {
+      if (!*placed) continue;
+      const SeamSide& s = seams_[index].sides[(*placed)->side];
+      PieceState& ps = state_[s.piece];
+      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
+        if (ps.tab_seam[k] == index) {
+          ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
+          ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
+          ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
+          break;
+        }
+      ps.has_tab[s.loop][s.index] = 0;
+      placed->reset();
+    }
   }
 
   // The seams whose tabs lie within a tab's width of the seam's edges, increasing.
@@ -379,6 +432,25 @@ class TabPlanner {
 };
 
 }  // namespace
+
+const Tab* TabPlan::on_side(std::size_t seam, int side) const {
+  for (const auto* placed : {&tab_of_seam, &second_half_of_seam})
+    if (seam < placed->size() && (*placed)[seam] && (*placed)[seam]->side == side) return &*(*placed)[seam];
+  return nullptr;
+}
+
+bool TabPlan::is_split(std::size_t seam) const {
+  return seam < second_half_of_seam.size() && second_half_of_seam[seam].has_value();
+}
+
+std::vector<const Tab*> TabPlan::all() const {
+  std::vector<const Tab*> tabs;
+  for (std::size_t s = 0; s < tab_of_seam.size(); ++s) {
+    if (tab_of_seam[s]) tabs.push_back(&*tab_of_seam[s]);
+    if (is_split(s)) tabs.push_back(&*second_half_of_seam[s]);
+  }
+  return tabs;
+}
 
 Polygon tab_trapezoid(Vec2 a, Vec2 b, double w, double slant_a, double slant_b) {
   // Keep a short outer side: a pointed tab is hard to glue and its tip tears.

@@ -47,6 +47,9 @@ struct LayoutOptions {
   /// Where a label finds no clear spot on its face, its seam's tab moves to its side and takes steep
   /// ends and the label's height, so that the label goes on the tab. The tabs take a little more paper.
   bool tabs_for_labels = true;
+  /// With tabs_for_labels: a long seam whose one tab holds one label while the other finds no clear
+  /// spot on its face gets its tab split in two halves, one on each side, each holding its side's label.
+  bool split_tabs_for_labels = true;
   /// Tab width and shape; a min_width_mm above width_mm counts as width_mm.
   TabOptions tab;
 
@@ -77,6 +80,7 @@ struct SheetStats {
   double coverage = 0;  ///< area of pieces and tabs over the printable area (0..1)
   double piece_area_mm2 = 0, tab_area_mm2 = 0;
   int pieces = 0, tabs = 0, dropped_tabs = 0, labels = 0;
+  int split_tabs = 0;       ///< seams whose tab is split in two halves (each half counts in tabs)
   double min_label_mm = 0;  ///< smallest label cap height (0 when there is none)
 };
 

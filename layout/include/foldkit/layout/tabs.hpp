@@ -1,5 +1,6 @@
 #pragma once
-// Glue tabs: one trapezoid per seam pair, on one side only. Each tab's slanted ends take at most half
+// Glue tabs: one trapezoid per seam pair, on one side only (or, asked for, split in two halves, one on
+// each side along opposite halves of the edge). Each tab's slanted ends take at most half
 // of the free angle at its corners, so it keeps clear of the neighbouring edges and of a neighbour's
 // tab even at sharp reflex corners; short edges get narrower tabs. A tab that would overlap its own
 // piece or one of the piece's tabs is narrowed, then moved to the partner edge, and dropped only when
@@ -41,14 +42,31 @@ struct Tab {
   double width_mm = 0;
 };
 
+/// plan_tabs' wanted side for a seam whose tab is split in two: each side carries a tab along its own
+/// half of the edge, glued under the other side's face along that half. Both labels of the seam then
+/// have a tab to sit on, where neither face has room for one.
+inline constexpr int kSplitTab = 2;
+
 struct TabPlan {
-  std::vector<std::optional<Tab>> tab_of_seam;  ///< per seam, its tab or nullopt when dropped
-  std::vector<SeamId> dropped;                  ///< seams without a tab, increasing
+  /// Per seam, its tab (a split one's half on its side 0) or nullopt when dropped.
+  std::vector<std::optional<Tab>> tab_of_seam;
+  /// Per seam (empty or sized like tab_of_seam): a split tab's half on side 1, else nullopt.
+  std::vector<std::optional<Tab>> second_half_of_seam;
+  std::vector<SeamId> dropped;  ///< seams without a tab, increasing
+
+  /// The tab side `side` of seam `seam` carries, or nullptr.
+  const Tab* on_side(std::size_t seam, int side) const;
+  /// Whether seam `seam` carries a tab on each side (split).
+  bool is_split(std::size_t seam) const;
+  /// Every placed tab, by seam (a split seam's two halves in side order).
+  std::vector<const Tab*> all() const;
 };
 
 /// Tabs for `seams` (processed in the order of `order`, or seam order when empty). `wanted_sides` (per
 /// seam, may be empty) names the side whose tab is tried first (-1: the planner's choice, which
 /// alternates along the outlines); the other side still gets the tab where the wanted one has no room.
+/// kSplitTab asks for a split tab, each half at least label_width_mm wide with steep ends; where the
+/// halves do not both fit, the seam gets one tab as if nothing was wanted.
 TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
                   std::span<const int> order = {}, std::span<const int> wanted_sides = {});
 
