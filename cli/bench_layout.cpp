@@ -50,7 +50,8 @@ std::vector<fs::path> mesh_files(const fs::path& corpus) {
   return files;
 }
 
-Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout::LayoutOptions o) {
+Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout::LayoutOptions o,
+            const unfold::PartOptions& parts) {
   Row row;
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
@@ -59,17 +60,18 @@ Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout
     row.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   };
   try {
-    const ChosenParts parts = choose_parts(mesh, unfolding, o);
-    const layout::LayoutResult r = parts.layout ? *parts.layout : layout::layout_sheets(parts.unfolding, o);
+    const ChosenParts chosen = choose_parts(mesh, unfolding, o, parts);
+    const layout::LayoutResult r =
+        chosen.layout ? *chosen.layout : layout::layout_sheets(chosen.unfolding, o);
     stop();
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
     row.bound = std::max(1L, static_cast<long>(std::ceil(used / (area.width() * area.height()) - 1e-9)));
     row.shape_bound = layout::shape_sheet_bound(
-        flat_face_cores_mm(parts.unfolding, *o.size_mm / unfolding.model_extent), area);
-    row.parts = parts.unfolding.piece_count;
-    row.seams = parts.unfolding.seam_count();
+        flat_face_cores_mm(chosen.unfolding, *o.size_mm / unfolding.model_extent), area);
+    row.parts = chosen.unfolding.piece_count;
+    row.seams = chosen.unfolding.seam_count();
     row.no_tab = r.overall.dropped_tabs;
     row.coverage = r.overall.coverage;
   } catch (const Error& e) {
@@ -117,7 +119,7 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
     uo.time_limit_s = a.time_limit_s;
     uo.cuts = cuts_for_print(loaded.mesh, o, uo.cuts);
     const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
-    Row row = run_one(loaded.mesh, unfolded.unfolding, o);
+    Row row = run_one(loaded.mesh, unfolded.unfolding, o, part_options_of(loaded.mesh, uo));
     row.mesh = name;
     row.faces = loaded.mesh.num_faces();
     row.size_mm = size;

@@ -12,6 +12,7 @@
 #include "foldkit/geom/hull.hpp"
 #include "foldkit/layout/pack.hpp"
 #include "foldkit/unfold/parts.hpp"
+#include "foldkit/unfold/seams.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -99,8 +100,9 @@ layout::LayoutOptions numbered(const layout::LayoutOptions& o, int number) {
 // Makes candidate partitions of one unfolding and lays them out, numbering the layouts it runs.
 class PartChooser {
  public:
-  PartChooser(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o)
-      : mesh_(mesh), u_(u), o_(o), rough_(estimate_options(o)) {
+  PartChooser(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o,
+              const unfold::PartOptions& parts)
+      : mesh_(mesh), u_(u), o_(o), rough_(estimate_options(o)), po_(parts) {
     po_.room_mm = layout::piece_room_mm(o);
     po_.mm_per_unit = *o.size_mm / u.model_extent;
   }
@@ -338,10 +340,25 @@ void fewer_seams_without_tab(PartChooser& chooser, std::vector<Candidate>& other
 
 }  // namespace
 
-ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
-                         const layout::LayoutOptions& o) {
+unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::UnfoldOptions& unfolded) {
+  unfold::PartOptions po;
+  po.move_seams = unfolded.move_seams;
+  po.constraints = unfold::resolve_seams(mesh, unfolded.seams);
+  po.cuts = unfolded.cuts;
+  return po;
+}
+
+ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o,
+                         const unfold::PartOptions& parts) {
   if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return {u, 0, 0, std::nullopt};
-  PartChooser chooser(mesh, u, o);
+  constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
+  const bool large = mesh.num_faces() > kManyFaces;
+  // Seams move inside the parts of smaller meshes only: on 2,000-face meshes the moves doubled some
+  // layouts (threeholes_2000 at 150 mm: 1.2 -> 2.9 s) and left more labels crossing lines at 250 mm
+  // (cheburashka_2000: 173 -> 324); up to 1,000 faces they leave fewer (9,729 -> 9,507 of 39,214).
+  unfold::PartOptions part_options = parts;
+  if (large) part_options.move_seams = false;
+  PartChooser chooser(mesh, u, o, part_options);
   Candidate first = chooser.make(1.0, unfold::PartGrowth::Tree);
   if (first.parts.split_pieces == 0) {
     chooser.lay_out(first);
@@ -352,8 +369,6 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   // that counts shapes too.
   const long bound = least_sheets(u, o, chooser.estimate(first));
   const auto trial_time = std::chrono::steady_clock::now() - first_start;
-  constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
-  const bool large = mesh.num_faces() > kManyFaces;
   std::vector<Candidate> candidates;
   candidates.push_back(std::move(first));
   try_partitions(chooser, o, bound, large, trial_time, candidates);

@@ -9,6 +9,8 @@
 
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/unfold/mesh.hpp"
+#include "foldkit/unfold/parts.hpp"
+#include "foldkit/unfold/unfold.hpp"
 #include "foldkit/unfold/unfolding.hpp"
 
 namespace foldkit::cli {
@@ -22,9 +24,15 @@ struct ChosenParts {
 };
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or
-/// when every piece fits; otherwise the best of the candidate partitions. Throws LayoutError.
+/// when every piece fits; otherwise the best of the candidate partitions. `parts` says what every split
+/// keeps to (its seam moves, forced cuts and folds, cuts: part_options_of); the room, scale and growth
+/// are set here. Throws LayoutError.
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding,
-                         const layout::LayoutOptions& options);
+                         const layout::LayoutOptions& options, const unfold::PartOptions& parts = {});
+
+/// What a split into parts keeps from the options `mesh` was unfolded with: the forced cuts and folds
+/// (--cut/--keep), the cuts' label grading, whether seams move.
+unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::UnfoldOptions& unfolded);
 
 /// Inside each flat face of `u` (every partition keeps it whole), a convex polygon in mm at
 /// `mm_per_unit`: the face itself when convex, else its largest triangle (layout::shape_sheet_bound).

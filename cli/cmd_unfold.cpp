@@ -69,7 +69,7 @@ void run_unfold(UnfoldArgs args) {
                                   [&](const unfold::LoadedMesh& loaded, unfold::UnfoldOptions& o) {
                                     o.cuts = cuts_for_print(loaded.mesh, layout_options, o.cuts);
                                   });
-  choose_and_note_parts(run.loaded.mesh, run.result, layout_options);
+  choose_and_note_parts(run, layout_options);
   line.clear();
   const unfold::Unfolding& u = run.result.unfolding;
   if (!args.output.empty())

@@ -19,12 +19,13 @@ constexpr double kUnfoldShareOfTimeLimit = 0.75;
 
 }  // namespace
 
-std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& mesh,
-                                                          unfold::UnfoldResult& result,
+std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
                                                           const layout::LayoutOptions& layout_options) {
   // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
   // that do, and say so, rather than refuse.
-  ChosenParts parts = choose_parts(mesh, result.unfolding, layout_options);
+  unfold::UnfoldResult& result = run.result;
+  ChosenParts parts = choose_parts(run.loaded.mesh, result.unfolding, layout_options,
+                                   part_options_of(run.loaded.mesh, run.options));
   if (parts.split_pieces > 0)
     result.notes.push_back(
         std::to_string(parts.split_pieces) + " piece(s) larger than the paper at this size cut into " +
@@ -67,7 +68,7 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   };
   const auto start = std::chrono::steady_clock::now();
   try {
-    auto laid_out = choose_and_note_parts(run.unfolded.loaded.mesh, run.unfolded.result, layout_options);
+    auto laid_out = choose_and_note_parts(run.unfolded, layout_options);
     run.layout = laid_out ? std::move(*laid_out)
                           : layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
   } catch (const LayoutError& e) {

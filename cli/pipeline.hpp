@@ -19,8 +19,7 @@ struct PipelineRun {
 /// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
 /// any split in result.notes. What `make` lays out and `unfold --size` writes.
 /// Returns the layout of those parts when the choice made one.
-std::optional<layout::LayoutResult> choose_and_note_parts(const unfold::Mesh& mesh,
-                                                          unfold::UnfoldResult& result,
+std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
                                                           const layout::LayoutOptions& layout_options);
 
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large

@@ -125,6 +125,7 @@ UnfoldRun load_and_unfold(const std::string& mesh_file, const UnfoldCliOptions& 
   unfold_options.seams = seams_of(run.loaded, mesh_file, options, run.loaded.notes);
   try {
     run.result = unfold::unfold_mesh(run.loaded.mesh, unfold_options, report);
+    run.options = unfold_options;
   } catch (const unfold::TooManyFaces& e) {
     throw InputError(e.file(), e.problem() + ", e.g. --max-faces 5000");
   } catch (const unfold::SeamError& e) {

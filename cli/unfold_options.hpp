@@ -42,6 +42,9 @@ void finish_unfold_options(UnfoldCliOptions& options);
 struct UnfoldRun {
   unfold::LoadedMesh loaded;
   unfold::UnfoldResult result;
+  /// What the unfolding ran with (the cuts at the print scale, the --cut/--keep seams): the split into
+  /// parts keeps to the same (part_options_of, choose_parts.hpp).
+  unfold::UnfoldOptions options;
 };
 /// `prepare` runs between loading and unfolding: it may refuse (e.g. a size before any work) or fit the
 /// unfold options to the loaded mesh (e.g. the cuts to the print scale, print_cuts.hpp).

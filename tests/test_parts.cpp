@@ -7,8 +7,10 @@
 #include "foldkit/error.hpp"
 #include "foldkit/geom/hull.hpp"
 #include "foldkit/layout/layout.hpp"
+#include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/flat_faces.hpp"
 #include "foldkit/unfold/parts.hpp"
+#include "foldkit/unfold/slits.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -62,7 +64,8 @@ test::UnfoldedExample lowpoly(const std::string& name) {
 
 TEST(Parts, AOnePieceUnfoldingTooLargeForA4IsCutIntoPartsThatFit) {
   const auto& ex = test::unfolded_example("spot_350.obj", Method::Search);
-  const PartOptions p = room_at(ex.unfolding, 160);
+  PartOptions p = room_at(ex.unfolding, 160);
+  p.move_seams = false;  // so that every old cut stays one (seam moves: below)
   const PartsResult parts = split_into_parts(ex.mesh, ex.unfolding, p);
   ASSERT_GT(parts.split_pieces, 0) << "spot at 160 mm does not fit A4 in one piece";
   const Unfolding& u = parts.unfolding;
@@ -73,6 +76,46 @@ TEST(Parts, AOnePieceUnfoldingTooLargeForA4IsCutIntoPartsThatFit) {
       EXPECT_TRUE(u.edges[e].cut) << "an old cut was glued back";
     }
   expect_parts_fit(u, p);
+}
+
+// Slits: cut-tree leaves at nearly flat vertices, where no glue tab fits (slits.hpp).
+int slits_of(const Mesh& mesh, const Unfolding& u) {
+  return count_slits(CutTree(make_context(mesh), edge_states(u)), kSlitGapPerLength);
+}
+
+TEST(Parts, SeamsMoveInsideThePartsClosingSlitsWhileEveryPartStillFitsItsRoom) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  int before = 0, after = 0;
+  for (double fraction : {1.0, 0.85, 0.7, 0.5, 0.35}) {
+    PartOptions p = room_at(ex.unfolding, 150, fraction, PartGrowth::Round);
+    p.move_seams = false;
+    const Unfolding still = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+    p.move_seams = true;
+    const Unfolding moved = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+    EXPECT_EQ(check_unfolding(ex.mesh, moved), std::vector<std::string>{});
+    EXPECT_EQ(moved.piece_count, still.piece_count) << "moves never add or remove a part";
+    expect_parts_fit(moved, p);
+    EXPECT_LE(slits_of(ex.mesh, moved), slits_of(ex.mesh, still)) << "at " << fraction << " of the room";
+    before += slits_of(ex.mesh, still);
+    after += slits_of(ex.mesh, moved);
+  }
+  EXPECT_LT(after, before);
+}
+
+TEST(Parts, SeamMovesInsideThePartsKeepTheForcedCutsAndFolds) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  PartOptions p = room_at(ex.unfolding, 150, 0.5, PartGrowth::Round);
+  p.move_seams = false;
+  const Unfolding still = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+  // Every edge of the unmoved parts forced as it is: no move is left.
+  p.constraints.rule.assign(ex.mesh.num_edges(), EdgeRule::Free);
+  for (int e = 0; e < ex.mesh.num_edges(); ++e)
+    if (!still.edges[e].boundary())
+      p.constraints.rule[EdgeId(e)] = still.edges[e].cut ? EdgeRule::MustCut : EdgeRule::MustFold;
+  p.move_seams = true;
+  const Unfolding moved = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+  for (int e = 0; e < ex.mesh.num_edges(); ++e)
+    EXPECT_EQ(moved.edges[e].cut, still.edges[e].cut) << "edge " << e;
 }
 
 TEST(Parts, PiecesThatFitAreLeftAlone) {

@@ -92,6 +92,27 @@ TEST(SeamMoves, ForcedCutsAndFoldsAreKept) {
   EXPECT_EQ(tree.overlap_count(), 0);
 }
 
+TEST(SeamMoves, AMoveTheCallerRefusesIsNotTaken) {
+  const Mesh mesh = load("spot_350.obj");
+  const UnfoldContext ctx = make_context(mesh);
+  const CutTree solved = solved_tree(ctx);
+  CutTree refused = solved, asked = solved;
+  SeamMoveOptions opt;
+  opt.accept = [](const CutTree&, const std::vector<int>&, const RigidMotion&) { return false; };
+  EXPECT_EQ(move_seams(refused, {}, {}, opt).moves, 0);
+  EXPECT_TRUE(refused.states() == solved.states());
+  // Asked about every move, with the side that moves; one accepted at most.
+  int calls = 0;
+  opt.accept = [&](const CutTree& t, const std::vector<int>& side, const RigidMotion&) {
+    EXPECT_FALSE(side.empty());
+    EXPECT_LT(2 * static_cast<int>(side.size()), t.num_faces() + 1) << "the smaller side moves";
+    return ++calls == 1;
+  };
+  EXPECT_EQ(move_seams(asked, {}, {}, opt).moves, 1);
+  EXPECT_GT(calls, 1);
+  EXPECT_EQ(asked.overlap_count(), 0);
+}
+
 TEST(SeamMoves, TheSameTreeGivesTheSameCuts) {
   const Mesh mesh = load("spot_350.obj");
   const UnfoldContext ctx = make_context(mesh);

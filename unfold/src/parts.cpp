@@ -9,6 +9,8 @@
 
 #include "foldkit/error.hpp"
 #include "foldkit/geom/hull.hpp"
+#include "foldkit/geom/rigid.hpp"
+#include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::unfold {
@@ -224,6 +226,49 @@ void check_flat_faces_fit(const Unfolding& u, const Units& units, const Fitter& 
   }
 }
 
+// Which room a part must keep when its seams move: the one it was grown to, or the sheet's for a
+// piece that was not split.
+enum class PartRoom : unsigned char { Sheet, Grown };
+
+// The forced cuts and folds a move must keep: the caller's, and a fold on every edge inside a flat face.
+EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& given) {
+  EdgeConstraints c = given;
+  if (c.rule.empty()) c.rule.assign(static_cast<int>(u.edges.size()), EdgeRule::Free);
+  for (std::size_t e = 0; e < u.edges.size(); ++e)
+    if (u.edges[e].inside_face) c.rule[EdgeId(static_cast<int>(e))] = EdgeRule::MustFold;
+  return c;
+}
+
+// `state` (the parts) with seams moved inside each part (seam_moves.hpp) where the moved part still fits
+// its room: `room` says per face which fitter judges its part.
+EdgeStates with_seams_moved(const Mesh& mesh, const Unfolding& u, const EdgeStates& state,
+                            const FaceMap<PartRoom>& room, const Fitter& sheet, const Fitter& grown,
+                            const PartOptions& o) {
+  const UnfoldContext ctx = make_context(mesh, o.cuts);
+  CutTree tree(ctx, state);
+  if (tree.overlap_count() > 0) return state;
+  std::vector<Vec2> points;
+  std::vector<bool> moving;
+  SeamMoveOptions so = o.seam_moves;
+  so.accept = [&](const CutTree& t, const std::vector<int>& side, const RigidMotion& motion) {
+    moving.assign(static_cast<std::size_t>(t.num_faces()), false);
+    for (int f : side)
+      moving[static_cast<std::size_t>(f)] = true;
+    const FaceId first(side.front());
+    points.clear();
+    for (int f = 0; f < t.num_faces(); ++f) {
+      if (t.piece(FaceId(f)) != t.piece(first)) continue;
+      for (Vec2 p : t.flat(FaceId(f)))
+        points.push_back(moving[static_cast<std::size_t>(f)] ? motion(p) : p);
+    }
+    const Fitter& fitter = room[first] == PartRoom::Grown ? grown : sheet;
+    return fitter.fits(convex_hull(std::move(points)));
+  };
+  const SeamMoveResult r =
+      move_seams(tree, move_constraints(u, o.constraints), tight_edges(mesh, o.cuts), so);
+  return r.moves > 0 ? tree.states() : state;
+}
+
 }  // namespace
 
 std::string PartTooLarge::message(int triangles, Vec2 room_mm, double asked_mm, double largest_mm,
@@ -258,6 +303,7 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   const std::vector<int> flat_face = flat_face_of(u);
 
   EdgeStates state = edge_states(u);
+  FaceMap<PartRoom> room(u.num_faces(), PartRoom::Sheet);
   bool changed = false;
   std::vector<int> part(u.num_faces(), -1);
   const std::vector<std::vector<int>> pieces = u.piece_faces();
@@ -272,6 +318,8 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
     const Units units = units_of(u, flat_face, faces);
     check_flat_faces_fit(u, units, whole, o);
     result.split_pieces += 1;
+    for (int f : faces)
+      room[FaceId(f)] = PartRoom::Grown;
     std::vector<int> tree_part = part;
     const int tree =
         o.growth == PartGrowth::Round ? 0 : grow_parts(u, faces, units, fitter, false, tree_part);
@@ -291,6 +339,7 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
       }
   }
   if (changed) {
+    if (o.move_seams) state = with_seams_moved(mesh, u, state, room, whole, fitter, o);
     result.unfolding = flatten(mesh, state);
     for (std::size_t e = 0; e < u.edges.size(); ++e)
       result.unfolding.edges[e].inside_face = u.edges[e].inside_face && !result.unfolding.edges[e].cut;

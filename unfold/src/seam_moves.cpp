@@ -134,12 +134,21 @@ class Mover {
     for (const Move& c : candidates_) {
       if (out_of_work()) return false;
       work_ += static_cast<long>(side_.size());
-      if (tree_.reattach_cost(side_, c.fold, 0) == 0) {
+      if (tree_.reattach_cost(side_, c.fold, 0) == 0 && accepted(c.fold)) {
         best = c;
         break;
       }
     }
     return true;
+  }
+
+  // The caller's own test of a move that folds `fold`, moving side_.
+  bool accepted(EdgeId fold) const {
+    if (!opt_.accept) return true;
+    for (const Link& l : boundary_)
+      if (l.edge == fold.index())
+        return opt_.accept(tree_, side_, tree_.glue_motion(fold, l.inside, l.outside));
+    return false;
   }
 
   void find_links(int e) {
@@ -194,7 +203,7 @@ SeamMoveResult move_seams(CutTree& tree, const EdgeConstraints& constraints,
   // Each pass tries the slits first, then the seams that cost only by their labels: a slit is worth more.
   for (int pass = 0; pass < options.max_passes && !mover.out_of_work(); ++pass) {
     int moves_this_pass = 0;
-    for (int phase = 0; phase < 2; ++phase)
+    for (int phase = 0; phase < (options.label_moves ? 2 : 1); ++phase)
       for (int c = 0; c < edges && !mover.out_of_work(); ++c) {
         if (!mover.inner_seam(c)) continue;
         const bool is_slit = mover.slit(c) > 0;

@@ -22,6 +22,9 @@ struct SeamMoveOptions {
   double tab_label_cost = 0.2;
   /// Folds on the cycle of a cut edge with a label cost tried for cutting, from each of its two ends.
   int cycle_ends = 6;
+  /// Also move seams that cost only by their labels (after the slits, each pass). Off: only slits are
+  /// tried, their moves still judged by the labels too.
+  bool label_moves = true;
   /// Passes over the seams; each pass tries every costly seam once and stops early when nothing improved.
   int max_passes = 6;
   /// Work budget, in faces and seams looked at (sides grown and re-tested for overlaps, cycles walked,
@@ -31,6 +34,9 @@ struct SeamMoveOptions {
   /// 6 s there, reached only by the slowest 2,000-face meshes (rocker_arm_2000 needs 800 million to
   /// finish at 250 mm; the others 50-250 million).
   long work_limit = 400'000'000;
+  /// When set, a move is taken only if this also accepts it: `side` (faces of one piece) moved rigidly by
+  /// `motion`, the rest of the piece where it lies (e.g. the piece must still fit a sheet).
+  std::function<bool(const CutTree& tree, const std::vector<int>& side, const RigidMotion& motion)> accept;
   /// Called for each seam tried, with the seams looked at over all passes and the most there can be;
   /// may be empty.
   std::function<void(long done, long total)> progress;
