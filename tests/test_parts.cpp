@@ -102,6 +102,34 @@ TEST(Parts, SeamsMoveInsideThePartsClosingSlitsWhileEveryPartStillFitsItsRoom) {
   EXPECT_LT(after, before);
 }
 
+TEST(Parts, SlitsAreClosedAcrossPartsWithAsManyPartsEachStillFittingTheSheet) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  int before = 0, after = 0;
+  for (double fraction : {1.0, 0.7, 0.5}) {
+    const PartOptions p = room_at(ex.unfolding, 150, fraction, PartGrowth::Round);
+    const Unfolding parts = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+    const Unfolding closed = close_slits_across_parts(ex.mesh, parts, p);
+    EXPECT_EQ(check_unfolding(ex.mesh, closed), std::vector<std::string>{});
+    EXPECT_EQ(closed.piece_count, parts.piece_count);
+    PartOptions sheet = p;
+    sheet.room_fraction = 1;
+    expect_parts_fit(closed, sheet);
+    EXPECT_LE(slits_of(ex.mesh, closed), slits_of(ex.mesh, parts)) << "at " << fraction << " of the room";
+    before += slits_of(ex.mesh, parts);
+    after += slits_of(ex.mesh, closed);
+    // Every edge forced as it is: nothing changes.
+    PartOptions forced = p;
+    forced.constraints.rule.assign(ex.mesh.num_edges(), EdgeRule::Free);
+    for (int e = 0; e < ex.mesh.num_edges(); ++e)
+      if (!parts.edges[e].boundary())
+        forced.constraints.rule[EdgeId(e)] = parts.edges[e].cut ? EdgeRule::MustCut : EdgeRule::MustFold;
+    const Unfolding kept = close_slits_across_parts(ex.mesh, parts, forced);
+    for (int e = 0; e < ex.mesh.num_edges(); ++e)
+      ASSERT_EQ(kept.edges[e].cut, parts.edges[e].cut) << "edge " << e;
+  }
+  EXPECT_LT(after, before);
+}
+
 TEST(Parts, SeamMovesInsideThePartsKeepTheForcedCutsAndFolds) {
   const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
   PartOptions p = room_at(ex.unfolding, 150, 0.5, PartGrowth::Round);

@@ -239,6 +239,109 @@ EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& give
   return c;
 }
 
+// What a cut edge costs by its label grade (as seam_moves.hpp weighs them; none without grades).
+double label_cost(const std::vector<LabelFit>& fit, EdgeId e) {
+  if (fit.empty()) return 0;
+  switch (fit[static_cast<std::size_t>(e.index())]) {
+    case LabelFit::Tight:
+      return 2;
+    case LabelFit::OnTab:
+      return 1;
+    case LabelFit::BothSides:
+      return 0;
+  }
+  return 0;
+}
+
+// close_slits_across_parts (parts.hpp): each slit once, the first join found that lowers the slit
+// count kept.
+class AcrossParts {
+ public:
+  AcrossParts(CutTree& tree, const EdgeConstraints& cons, const std::vector<LabelFit>& fit,
+              const Fitter& fitter, double min_gap)
+      : t_(tree), m_(tree.mesh()), cons_(cons), fit_(fit), fitter_(fitter), min_gap_(min_gap) {
+    edges_at_.resize(static_cast<std::size_t>(m_.num_vertices()));
+    for (int e = 0; e < m_.num_edges(); ++e)
+      for (int v : m_.edges[e].v)
+        edges_at_[static_cast<std::size_t>(v)].push_back(e);
+  }
+
+  void run() {
+    slits_ = count_slits(t_, min_gap_);
+    for (int c = 0; c < m_.num_edges(); ++c)
+      if (is_slit(c))
+        for (int v : m_.edges[c].v)
+          if (close_at(v)) break;
+  }
+
+ private:
+  bool is_slit(int c) const {
+    const auto& edge = m_.edges[c];
+    return !edge.boundary() && !t_.folded(EdgeId(c)) &&
+           t_.piece(edge.face_id(0)) == t_.piece(edge.face_id(1)) &&
+           slit_cost(seam_gap_per_length(t_, EdgeId(c)), min_gap_) > 0;
+  }
+
+  // Tries each fold at v: cut it, give the side cut off to a neighbour. True once one is kept.
+  bool close_at(int v) {
+    for (int e : edges_at_[static_cast<std::size_t>(v)]) {
+      const EdgeId cut(e);
+      if (!t_.folded(cut) || cons_.fold(cut)) continue;
+      // Only where both labels fit: cuts through flat regions of sliver faces left labels crossing lines.
+      if (label_cost(fit_, cut) > 0) continue;
+      t_.smaller_side(cut, side_);
+      const std::vector<int> side = side_;
+      const auto& ef = m_.edges[e].face;
+      const FaceId rest(t_.in_side(FaceId(ef[0])) ? ef[1] : ef[0]);
+      t_.cut(cut);
+      if (join_neighbour(side, rest, label_cost(fit_, cut))) return true;
+      t_.stitch(cut);
+    }
+    return false;
+  }
+
+  bool join_neighbour(const std::vector<int>& side, FaceId rest, double new_label) {
+    for (int x : side)
+      for (int a : m_.face_edges[x]) {
+        const EdgeId link(a);
+        if (t_.folded(link) || m_.edges[a].boundary() || cons_.cut(link)) continue;
+        const FaceId y = t_.across(link, FaceId(x));
+        // Piece ids change as trial joins are undone: asked afresh.
+        if (t_.piece(y) == t_.piece(FaceId(x)) || t_.piece(y) == t_.piece(rest)) continue;
+        if (label_cost(fit_, link) < new_label || !t_.curvature_allows_fold(link)) continue;
+        if (t_.stitch_cost(link, 0) > 0) continue;
+        t_.stitch(link);
+        const int slits = count_slits(t_, min_gap_);
+        if (slits < slits_ && fits(t_.piece(y))) {
+          slits_ = slits;
+          return true;
+        }
+        t_.cut(link);
+      }
+    return false;
+  }
+
+  bool fits(int piece) {
+    points_.clear();
+    for (int f = 0; f < t_.num_faces(); ++f)
+      if (t_.piece(FaceId(f)) == piece)
+        for (Vec2 p : t_.flat(FaceId(f)))
+          points_.push_back(p);
+    return fitter_.fits(convex_hull(std::move(points_)));
+  }
+
+  CutTree& t_;
+  const Mesh& m_;
+  const EdgeConstraints& cons_;
+  const std::vector<LabelFit>& fit_;
+  const Fitter& fitter_;
+  double min_gap_;
+  int slits_ = 0;
+  std::vector<std::vector<int>> edges_at_;
+  std::vector<int> side_;
+  std::vector<Vec2> points_;
+};
+
 // `state` (the parts) with seams moved inside each part (seam_moves.hpp) where the moved part still fits
 // its room: `room` says per face which fitter judges its part.
 EdgeStates with_seams_moved(const Mesh& mesh, const Unfolding& u, const EdgeStates& state,
@@ -344,6 +447,20 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
     for (std::size_t e = 0; e < u.edges.size(); ++e)
       result.unfolding.edges[e].inside_face = u.edges[e].inside_face && !result.unfolding.edges[e].cut;
   }
+  return result;
+}
+
+Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& o) {
+  const UnfoldContext ctx = make_context(mesh, o.cuts);
+  CutTree tree(ctx, edge_states(parts));
+  if (tree.overlap_count() > 0) return parts;
+  const Fitter sheet(o.mm_per_unit, o.room_mm);
+  AcrossParts(tree, move_constraints(parts, o.constraints), tight_edges(mesh, o.cuts), sheet,
+              o.seam_moves.min_gap_per_length)
+      .run();
+  Unfolding result = flatten(mesh, tree.states());
+  for (std::size_t e = 0; e < parts.edges.size(); ++e)
+    result.edges[e].inside_face = parts.edges[e].inside_face && !result.edges[e].cut;
   return result;
 }
 

@@ -100,6 +100,13 @@ class PartTooLarge : public LayoutError {
 /// when a flat face alone is larger than the room, naming the largest model size that fits.
 PartsResult split_into_parts(const Mesh& mesh, const Unfolding& unfolding, const PartOptions& options);
 
+/// Slits that the moves inside the parts left (seam_moves.hpp), closed across parts: a fold at a slit's
+/// end is cut, which splits its part, and the side cut off joins a neighbouring part along a seam between
+/// them, where the neighbour with it stays overlap-free and fits options.room_mm, both labels of the new
+/// cut fit beside it (options.cuts), options.constraints and the flat faces are kept, and the slits get
+/// fewer. As many parts as before; parts change shape, so the caller judges the packing again.
+Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& options);
+
 /// Per face, the flat face it belongs to (faces joined by UnfoldEdge::inside_face), numbered from 0.
 std::vector<int> flat_face_of(const Unfolding& unfolding);
 
