@@ -239,18 +239,9 @@ EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& give
   return c;
 }
 
-// What a cut edge costs by its label grade (as seam_moves.hpp weighs them; none without grades).
-double label_cost(const std::vector<LabelFit>& fit, EdgeId e) {
-  if (fit.empty()) return 0;
-  switch (fit[static_cast<std::size_t>(e.index())]) {
-    case LabelFit::Tight:
-      return 2;
-    case LabelFit::OnTab:
-      return 1;
-    case LabelFit::BothSides:
-      return 0;
-  }
-  return 0;
+// Whether both labels of edge e fit beside it were it cut (every edge without grades).
+bool labels_fit(const std::vector<LabelFit>& fit, EdgeId e) {
+  return fit.empty() || fit[static_cast<std::size_t>(e.index())] == LabelFit::BothSides;
 }
 
 // close_slits_across_parts (parts.hpp): each slit once, the first join found that lowers the slit
@@ -288,19 +279,19 @@ class AcrossParts {
       const EdgeId cut(e);
       if (!t_.folded(cut) || cons_.fold(cut)) continue;
       // Only where both labels fit: cuts through flat regions of sliver faces left labels crossing lines.
-      if (label_cost(fit_, cut) > 0) continue;
+      if (!labels_fit(fit_, cut)) continue;
       t_.smaller_side(cut, side_);
       const std::vector<int> side = side_;
       const auto& ef = m_.edges[e].face;
       const FaceId rest(t_.in_side(FaceId(ef[0])) ? ef[1] : ef[0]);
       t_.cut(cut);
-      if (join_neighbour(side, rest, label_cost(fit_, cut))) return true;
+      if (join_neighbour(side, rest)) return true;
       t_.stitch(cut);
     }
     return false;
   }
 
-  bool join_neighbour(const std::vector<int>& side, FaceId rest, double new_label) {
+  bool join_neighbour(const std::vector<int>& side, FaceId rest) {
     for (int x : side)
       for (int a : m_.face_edges[x]) {
         const EdgeId link(a);
@@ -308,8 +299,7 @@ class AcrossParts {
         const FaceId y = t_.across(link, FaceId(x));
         // Piece ids change as trial joins are undone: asked afresh.
         if (t_.piece(y) == t_.piece(FaceId(x)) || t_.piece(y) == t_.piece(rest)) continue;
-        if (label_cost(fit_, link) < new_label || !t_.curvature_allows_fold(link)) continue;
-        if (t_.stitch_cost(link, 0) > 0) continue;
+        if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) continue;
         t_.stitch(link);
         const int slits = count_slits(t_, min_gap_);
         if (slits < slits_ && fits(t_.piece(y))) {
