@@ -274,3 +274,36 @@ TEST(EdgeNumbers, TabsOnTheSideWithoutRoomLeaveFewerLabelsWithoutAClearSpot) {
   EXPECT_GE(honoured, 0.8 * static_cast<double>(decided)) << "the wanted side gets the tab where it fits";
   EXPECT_LT(after, before) << "labels without a clear spot";
 }
+
+// A caller that changed some pieces' tabs places only their labels again: they must come out exactly
+// as in a placement of every piece, since a label keeps clear of its own piece only.
+TEST(EdgeNumbers, LabelsPlacedForSomePiecesOnlyAreThoseOfAPlacementOfAll) {
+  const auto& ex = test::unfolded_example("spot_350.obj");
+  const auto pieces = scaled_pieces(ex.unfolding, 110 / ex.unfolding.model_extent);
+  ASSERT_GT(pieces.size(), 4u);
+  const auto seams = find_seams(ex.unfolding, pieces);
+  const auto numbers = number_seams(pieces, seams);
+  const TabPlan tabs = plan_tabs(pieces, seams, TabOptions{});
+  std::vector<std::vector<FoldLine>> folds;
+  for (const ScaledPiece& p : pieces)
+    folds.push_back(fold_lines(ex.unfolding, p));
+  const LabelOptions o;
+  const std::vector<Label> all = place_labels(pieces, seams, numbers, tabs, folds, {}, o);
+  std::vector<int> some;
+  for (int p = 0; p < static_cast<int>(pieces.size()); p += 3)
+    some.push_back(p);
+  const std::vector<Label> part = place_labels(pieces, seams, numbers, tabs, folds, {}, o, {}, {}, some);
+  std::vector<Label> expected;
+  for (const Label& l : all)
+    if (l.piece % 3 == 0) expected.push_back(l);
+  ASSERT_EQ(part.size(), expected.size());
+  ASSERT_LT(part.size(), all.size());
+  for (std::size_t i = 0; i < part.size(); ++i) {
+    EXPECT_EQ(part[i].seam, expected[i].seam);
+    EXPECT_EQ(part[i].side, expected[i].side);
+    EXPECT_EQ(part[i].text, expected[i].text);
+    EXPECT_EQ(part[i].box_mm, expected[i].box_mm) << "label of seam " << part[i].seam.index();
+    EXPECT_EQ(part[i].crowded, expected[i].crowded);
+    EXPECT_EQ(part[i].over_fold, expected[i].over_fold);
+  }
+}

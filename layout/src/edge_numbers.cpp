@@ -230,8 +230,14 @@ class LabelPlacer {
   LabelPlacer(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabPlan& tabs,
               std::span<const std::vector<FoldLine>> fold_lines, std::span<const std::string> hints,
               const LabelOptions& options, const SeamTexts& texts,
-              std::span<const std::vector<Polygon>> taken)
-      : pieces_(pieces), seams_(seams), hints_(hints), o_(options) {
+              std::span<const std::vector<Polygon>> taken, std::span<const int> only_pieces)
+      : pieces_(pieces),
+        seams_(seams),
+        hints_(hints),
+        o_(options),
+        placing_(pieces.size(), only_pieces.empty()) {
+    for (int p : only_pieces)
+      placing_.at(static_cast<std::size_t>(p)) = true;
     build_obstacles(fold_lines, taken);
     collect_sides(tabs, texts);
   }
@@ -285,7 +291,8 @@ class LabelPlacer {
                        std::span<const std::vector<Polygon>> taken) {
     obstacles_.reserve(pieces_.size());
     for (std::size_t p = 0; p < pieces_.size(); ++p) {
-      obstacles_.emplace_back(piece_region(pieces_[p]));
+      obstacles_.emplace_back(placing_[p] ? piece_region(pieces_[p]) : Box2{});
+      if (!placing_[p]) continue;
       PieceObstacles& ob = obstacles_.back();
       auto add = [&](Vec2 a, Vec2 b, bool fold) {
         Box2 box;
@@ -314,7 +321,7 @@ class LabelPlacer {
       const int first = !tabs.on_side(s, 0) && tabs.on_side(s, 1) ? 1 : 0;
       for (int k : {first, 1 - first}) {
         const SeamSide& at = seams_[s].sides[k];
-        if (at.piece < 0) continue;
+        if (at.piece < 0 || !placing_[at.piece]) continue;
         SideTask side;
         side.seam = static_cast<int>(s);
         side.side = k;
@@ -634,6 +641,7 @@ class LabelPlacer {
   std::span<const Seam> seams_;
   std::span<const std::string> hints_;
   const LabelOptions& o_;
+  std::vector<bool> placing_;  // per piece, whether its labels are placed (only_pieces)
   std::vector<PieceObstacles> obstacles_;
   std::vector<SideTask> sides_;
 };
@@ -644,13 +652,14 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& o,
-                                const SeamTexts& texts, std::span<const std::vector<Polygon>> taken) {
+                                const SeamTexts& texts, std::span<const std::vector<Polygon>> taken,
+                                std::span<const int> only_pieces) {
   if (texts.full.size() >= seams.size())
-    return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken).run();
+    return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken, only_pieces).run();
   SeamTexts numbers_only;
   for (int n : numbers)
     numbers_only.full.push_back({number_text(n), number_text(n)});
-  return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, numbers_only, taken).run();
+  return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, numbers_only, taken, only_pieces).run();
 }
 
 }  // namespace foldkit::layout

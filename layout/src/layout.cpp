@@ -136,6 +136,47 @@ std::vector<Label> place_draft_labels(const Draft& d, const SeamTexts& texts) {
                       d.label_taken);
 }
 
+// The labels of the pieces `changed` marks placed again, the others' taken from `kept`, in the order
+// place_draft_labels gives them (the seams', the side with the tab first), so that every later step sees
+// what a placement of all would have given. With hints everything is placed again: a seam's step mark
+// goes on one side, which may be in another piece.
+std::vector<Label> place_draft_labels_again(const Draft& d, const SeamTexts& texts, std::vector<Label> kept,
+                                            const std::vector<bool>& changed) {
+  std::vector<int> pieces;
+  for (std::size_t p = 0; p < changed.size(); ++p)
+    if (changed[p]) pieces.push_back(static_cast<int>(p));
+  if (!d.hints.empty() || pieces.size() == d.pieces.size()) return place_draft_labels(d, texts);
+  if (pieces.empty()) return kept;
+  std::vector<Label> placed = place_labels(d.pieces, d.seams, d.printed, d.tabs, d.label_avoid, d.hints,
+                                           d.label_options, texts, d.label_taken, pieces);
+  std::vector<std::array<std::optional<Label>, 2>> by_side(d.seams.size());
+  for (std::vector<Label>* from : {&kept, &placed})
+    for (Label& l : *from)
+      if (from == &placed || !changed[l.piece]) by_side[l.seam.index()][l.side] = std::move(l);
+  std::vector<Label> labels;
+  for (std::size_t s = 0; s < d.seams.size(); ++s) {
+    const int first = !d.tabs.on_side(s, 0) && d.tabs.on_side(s, 1) ? 1 : 0;
+    for (int k : {first, 1 - first})
+      if (by_side[s][k]) labels.push_back(std::move(*by_side[s][k]));
+  }
+  return labels;
+}
+
+// Per piece, whether one of its seam sides carries another tab in `b` than in `a` (none, or another
+// shape): only those pieces' labels can change when the tabs are planned again.
+std::vector<bool> pieces_with_other_tabs(const Draft& d, const TabPlan& a, const TabPlan& b) {
+  std::vector<bool> changed(d.pieces.size(), false);
+  for (std::size_t s = 0; s < d.seams.size(); ++s)
+    for (int k : {0, 1}) {
+      const int piece = d.seams[s].sides[k].piece;
+      if (piece < 0) continue;
+      const Tab *x = a.on_side(s, k), *y = b.on_side(s, k);
+      const bool same = x == nullptr ? y == nullptr : y != nullptr && x->quad_mm == y->quad_mm;
+      if (!same) changed[piece] = true;
+    }
+  return changed;
+}
+
 // Per seam, the side whose tab should carry the label (tab_sides_for_labels), for the brief label: the
 // number, after a letter when the mate is another part (the letters come later; one stands for all).
 std::vector<int> tab_sides_wanted(const Draft& d, const LayoutOptions& o) {
@@ -202,7 +243,8 @@ void keep_tabs_if_labels_gain(Draft& d, const LayoutOptions& o, std::vector<int>
   TabPlan replanned = plan_draft_tabs(d, o, wanted);
   if (replanned.dropped.size() > d.tabs.dropped.size()) return;
   TabPlan kept = std::exchange(d.tabs, std::move(replanned));
-  std::vector<Label> again = place_draft_labels(d, seam_texts(d));
+  std::vector<Label> again =
+      place_draft_labels_again(d, seam_texts(d), d.labels, pieces_with_other_tabs(d, kept, d.tabs));
   if (labels_without_clear_spot(again) < labels_without_clear_spot(d.labels)) {
     d.labels = std::move(again);
     d.tab_sides = std::move(wanted);
@@ -510,7 +552,7 @@ void settle_labels(Draft& d, const LayoutOptions& o, std::span<const PackItem> i
   for (const Label& l : d.labels)
     if (l.text != texts.full[l.seam.index()][l.side]) changed[l.piece] = any = true;
   if (!any) return;
-  std::vector<Label> again = place_draft_labels(d, texts);
+  std::vector<Label> again = place_draft_labels_again(d, texts, d.labels, changed);
   // A new label that sticks out where packing kept no room gives way to the first label of its side
   // (packed, so inside the shape) when that one is clear of the piece's new labels; else the piece
   // keeps all its first labels.

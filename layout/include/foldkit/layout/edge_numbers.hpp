@@ -94,13 +94,16 @@ std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::
 /// legible minimum (the sides with the least room first), then the full text, the hint and a larger
 /// size where the room allows. Obstacles are looked up through grids, so the time grows with the number
 /// of seams, not its square. `taken` (per piece, may be empty) are convex areas already used (part
-/// letters) that labels keep clear of like other labels.
+/// letters) that labels keep clear of like other labels. `only_pieces` (empty: all) places the labels
+/// of those pieces only; without hints they come out as the same pieces' labels of a call for all (a
+/// label keeps clear of its own piece only), so a caller may place again only what changed. With hints
+/// a seam's step mark goes on one of its two sides, which may lie in two pieces.
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& options,
-                                const SeamTexts& texts = {},
-                                std::span<const std::vector<Polygon>> taken = {});
+                                const SeamTexts& texts = {}, std::span<const std::vector<Polygon>> taken = {},
+                                std::span<const int> only_pieces = {});
 
 /// How far the glyphs of `text` at cap height `height_mm` reach below the baseline: the descender of
 /// "p" (in "p2") and of brackets, about a third of the cap height in DejaVu Sans and Hershey futural;
