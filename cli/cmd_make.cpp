@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -158,6 +159,24 @@ nlohmann::json parts_json(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   return parts;
 }
 
+// The labels without a clear spot, where a maker looks for them: by sheet, then part letter.
+nlohmann::json crowded_labels_json(const layout::LayoutResult& r) {
+  std::vector<const layout::LayoutResult::CrowdedLabel*> labels;
+  for (const auto& l : r.crowded_labels)
+    labels.push_back(&l);
+  const auto sheet = [&](const auto* l) { return r.placements[l->piece].sheet; };
+  const auto letter = [&](const auto* l) { return r.piece_letters[l->piece]; };
+  std::stable_sort(labels.begin(), labels.end(), [&](const auto* a, const auto* b) {
+    const std::string la = letter(a), lb = letter(b);
+    return std::make_tuple(sheet(a), la.size(), la) < std::make_tuple(sheet(b), lb.size(), lb);
+  });
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto* l : labels)
+    list.push_back(
+        {{"text", l->text}, {"seam_name", l->seam_name}, {"part", letter(l)}, {"sheet", sheet(l) + 1}});
+  return list;
+}
+
 // One line when the faces are too small for clear labels, with the remedy computed for this model.
 std::string label_remedy(const layout::LayoutResult& r, int faces) {
   if (!(r.label_room_factor > 1)) return "";
@@ -165,7 +184,7 @@ std::string label_remedy(const layout::LayoutResult& r, int faces) {
   char line[256];
   std::snprintf(line, sizeof line,
                 "%d of %d edge numbers find no spot clear of lines and labels at %.0f mm (faces too small): "
-                "use --size %.0fmm, or --max-faces %d at this size",
+                "use --size %.0fmm, or --max-faces %d at this size (--json lists them)",
                 r.labels_without_room, r.overall.labels, r.size_mm, std::ceil(r.size_mm * f / 10) * 10,
                 std::max(4, static_cast<int>(faces / (f * f))));
   return line;
@@ -279,6 +298,7 @@ nlohmann::json make_json(const MakeArgs& args, const PipelineRun& run,
                    {"labels_turned_count", r.label_audit.turned},
                    {"letters_crossing_lines_count", r.label_audit.letters_crossing_lines},
                    {"labels_without_room_count", r.labels_without_room},
+                   {"crowded_labels", crowded_labels_json(r)},
                    {"dropped_tab_seams", r.dropped_tab_seams}};
   if (!r.assembly.empty()) j["assembly_steps"] = assembly;
   return j;

@@ -129,6 +129,32 @@ TEST(CliMake, JsonListsThePartsWithTheirSheetsAndFacesAndTheLabelCounts) {
   EXPECT_EQ(j["dropped_tab_seams"].size(), j["overall"]["dropped_tab_count"].get<std::size_t>());
 }
 
+// A maker told that labels lack room must be able to find them: each is listed with its part and sheet.
+TEST(CliMake, JsonListsEveryLabelWithoutRoomWithItsPartAndSheet) {
+  const fs::path dir = test::temp_dir("make-json-crowded");
+  auto run = test::run_foldkit({"make", test::example_mesh("spot_350.obj").string(), "--size", "90mm", "-o",
+                                (dir / "spot.svg").string(), "--json", "--no-guide"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  const auto& listed = j["crowded_labels"];
+  ASSERT_EQ(listed.size(), j["labels_without_room_count"].get<std::size_t>());
+  ASSERT_GT(listed.size(), 0u) << "spot at 90 mm has faces too small for some labels";
+  std::map<std::string, int> sheet_of_part;
+  for (const auto& part : j["parts"])
+    sheet_of_part[part["id"].get<std::string>()] = part["sheet"].get<int>();
+  for (const auto& label : listed) {
+    const std::string part = label["part"].get<std::string>();
+    ASSERT_TRUE(sheet_of_part.count(part)) << part;
+    EXPECT_EQ(label["sheet"].get<int>(), sheet_of_part[part]);
+    const std::string text = label["text"].get<std::string>(), name = label["seam_name"].get<std::string>();
+    const auto digits = text.find_first_of("0123456789");
+    ASSERT_NE(digits, std::string::npos) << text;
+    const std::string number = text.substr(digits, text.find_first_not_of("0123456789.", digits) - digits);
+    EXPECT_NE(name.find(number), std::string::npos) << text << " is seam " << name;
+    EXPECT_NE(name.find(part), std::string::npos) << "seam " << name << " touches part " << part;
+  }
+}
+
 TEST(CliMake, PngPreviewsHaveThePixelSizeOfTheDpi) {
   const fs::path dir = test::temp_dir("make-png");
   const fs::path png = dir / "fish.png";

@@ -669,6 +669,10 @@ void measure_label_room(const Draft& d, const unfold::Unfolding& u, const Layout
   constexpr double kLeastGrowth = 1.2;
   const LabelRoom asked = label_room(d, u);
   r.labels_without_room = asked.without_room;
+  for (const Label& l : d.labels)
+    if (!has_clear_spot(l))
+      r.crowded_labels.push_back({l.text, listed_seam_name(d, static_cast<int>(l.seam.index())), l.piece});
+
   double factor = asked.factor;
   LayoutOptions quiet = o;
   quiet.progress = nullptr;

@@ -122,6 +122,14 @@ struct LayoutResult {
   LabelAudit label_audit;
   /// Seam labels that found no spot clear of every line and label (they cross a fold or touch).
   int labels_without_room = 0;
+  /// Those labels, so that a maker can find them: the text printed, the seam's name (as listed) and the
+  /// piece the label is on.
+  struct CrowdedLabel {
+    std::string text;
+    std::string seam_name;
+    int piece = -1;
+  };
+  std::vector<CrowdedLabel> crowded_labels;
   /// When more than 2% of the labels have no room: how many times larger the model (or its faces)
   /// must be for all but 2% to find a clear spot; 1 otherwise.
   double label_room_factor = 1;
