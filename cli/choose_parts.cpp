@@ -121,28 +121,38 @@ class PartChooser {
     return c;
   }
 
-  // The full layout, with labels and letters. Tabs that grow or split to hold labels (tabs_for_labels)
-  // take paper the estimate did not see: where the layout then needs more sheets than estimated, it is
-  // laid out again with whole tabs, then with plain tabs, and the one with fewest sheets kept: a sheet is
-  // worth more than those labels. Large meshes skip the whole tabs: over `bench --layout` they saved a
-  // sheet on 3 of 55 such layouts (plain tabs on 9) for 12 s of the 194 s, and on a 2,000-face mesh
-  // each try costs 0.6 s of the 3 s a layout may take.
+  // The full layout, with labels and letters. Tabs that grow, split or change sides to hold labels take
+  // paper the estimate did not see: where the layout then needs more sheets than estimated, it is laid
+  // out again with fewer such tabs, down to the estimate's own tabs, until it needs no more sheets than
+  // estimated; the one with fewest sheets is kept: a sheet is worth more than those labels.
   void lay_out(Candidate& c) {
     c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
     c.sheets = sheets_with_pieces(*c.layout);
-    if (!o_.tabs_for_labels || c.estimated_sheets == 0) return;
-    layout::LayoutOptions whole = o_;
-    whole.split_tabs_for_labels = false;
-    layout::LayoutOptions plain = whole;
-    plain.tabs_for_labels = false;
-    for (const layout::LayoutOptions* fewer_tabs : {&whole, &plain}) {
+    if (c.estimated_sheets == 0) return;
+    for (const layout::LayoutOptions& fewer_tabs : fewer_label_tabs()) {
       if (c.sheets <= c.estimated_sheets) return;
-      if (fewer_tabs == &whole && (!o_.split_tabs_for_labels || large_)) continue;
-      layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(*fewer_tabs, ++layouts_));
+      layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(fewer_tabs, ++layouts_));
       if (sheets_with_pieces(r) >= c.sheets) continue;
       c.sheets = sheets_with_pieces(r);
       c.layout = std::move(r);
     }
+  }
+
+  // The layouts lay_out tries after the full one, each with fewer tabs for labels: whole tabs (none split),
+  // then no tab grown for a crowded label, then tabs planned as if there were no labels. Large meshes try
+  // only the last: over `bench --layout` whole tabs saved a sheet on 3 of 55 such layouts for 12 s of the
+  // 194 s, and on a 2,000-face mesh each try costs 0.6 s of the 3 s a layout may take.
+  std::vector<layout::LayoutOptions> fewer_label_tabs() const {
+    std::vector<layout::LayoutOptions> ladder;
+    if (!o_.numbers || !o_.tabs) return ladder;
+    layout::LayoutOptions o = o_;
+    o.split_tabs_for_labels = false;
+    if (o_.tabs_for_labels && o_.split_tabs_for_labels && !large_) ladder.push_back(o);
+    o.tabs_for_labels = false;
+    if (o_.tabs_for_labels && !large_) ladder.push_back(o);
+    o.tab_sides_for_labels = false;
+    if (o_.tab_sides_for_labels) ladder.push_back(o);
+    return ladder;
   }
 
   // The cheap layout (estimate_options): sets c.sheets, returns the area the pieces and tabs take (mm²).

@@ -545,6 +545,24 @@ TEST(Layout, ALabelWithNoClearSpotOnItsFaceGetsItsSeamsTabWithRoomForIt) {
   EXPECT_LE(with.overall.dropped_tabs, without.overall.dropped_tabs) << "no seam loses its tab for a label";
 }
 
+// The part chooser's last resort when tabs for labels cost a sheet its estimate promised: tabs planned
+// as if there were no labels, exactly the estimate's, so the same paper.
+TEST(Layout, WithoutTabsForLabelsTheTabsAreThoseOfALayoutWithoutNumbers) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  LayoutOptions o = at_size(150);
+  o.paper_mm = {594, 841};
+  const LayoutResult with = layout_sheets(ex.unfolding, o);
+  o.tabs_for_labels = false;
+  o.tab_sides_for_labels = false;
+  const LayoutResult plain = layout_sheets(ex.unfolding, o);
+  o.numbers = false;
+  const LayoutResult unnumbered = layout_sheets(ex.unfolding, o);
+  EXPECT_EQ(plain.overall.tab_area_mm2, unnumbered.overall.tab_area_mm2);
+  EXPECT_EQ(plain.overall.tabs, unnumbered.overall.tabs);
+  EXPECT_NE(with.overall.tab_area_mm2, plain.overall.tab_area_mm2) << "labels move and grow some tabs";
+  EXPECT_GT(plain.overall.labels, 0);
+}
+
 TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
   const auto& ex = test::unfolded_example("fish_350.obj");
   LayoutOptions o = at_size(200);

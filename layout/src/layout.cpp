@@ -327,7 +327,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   report(o, "drawing", 3, kSteps);
 
   if (o.tabs) {
-    d.tab_sides = tab_sides_wanted(d, o);
+    if (o.tab_sides_for_labels) d.tab_sides = tab_sides_wanted(d, o);
     d.tabs = plan_draft_tabs(d, o, d.tab_sides);
   } else {
     d.tabs.tab_of_seam.resize(d.seams.size());

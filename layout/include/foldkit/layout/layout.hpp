@@ -44,6 +44,11 @@ struct LayoutOptions {
   FoldOptions fold;
 
   bool tabs = true;  ///< one glue tab per seam pair
+  /// A seam whose one face has no room beside the edge for its label while the other has gets its tab on
+  /// the side without room, with steep ends and the label's height, to carry that label
+  /// (tab_sides_for_labels). Without it (or without numbers) the tabs are planned as if there were no
+  /// labels: the tabs of the part chooser's estimate.
+  bool tab_sides_for_labels = true;
   /// Where a label finds no clear spot on its face, its seam's tab moves to its side and takes steep
   /// ends and the label's height, so that the label goes on the tab. The tabs take a little more paper.
   bool tabs_for_labels = true;
