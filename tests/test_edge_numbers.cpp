@@ -13,6 +13,19 @@
 using namespace foldkit;
 using namespace foldkit::layout;
 
+namespace {
+
+// Each piece's fold lines, which labels keep clear of.
+std::vector<std::vector<FoldLine>> folds_of(const unfold::Unfolding& u,
+                                            const std::vector<ScaledPiece>& pieces) {
+  std::vector<std::vector<FoldLine>> folds;
+  for (const ScaledPiece& p : pieces)
+    folds.push_back(fold_lines(u, p));
+  return folds;
+}
+
+}  // namespace
+
 TEST(EdgeNumbers, SeamsAreNumberedOneToNOnce) {
   const auto& ex = test::unfolded_example("fish_350.obj");
   const auto pieces = scaled_pieces(ex.unfolding, 1);
@@ -30,9 +43,7 @@ TEST(EdgeNumbers, BothSidesOfEverySeamAreLabelledLegiblyAndLabelsDoNotOverlap) {
     const auto seams = find_seams(ex.unfolding, pieces);
     const auto numbers = number_seams(pieces, seams);
     const TabPlan tabs = plan_tabs(pieces, seams, TabOptions{});
-    std::vector<std::vector<FoldLine>> folds;
-    for (const ScaledPiece& p : pieces)
-      folds.push_back(fold_lines(ex.unfolding, p));
+    const auto folds = folds_of(ex.unfolding, pieces);
     LabelOptions o;
     const auto labels = place_labels(pieces, seams, numbers, tabs, folds, {}, o);
     ASSERT_EQ(labels.size(), 2 * seams.size());
@@ -247,9 +258,7 @@ TEST(EdgeNumbers, TabsOnTheSideWithoutRoomLeaveFewerLabelsWithoutAClearSpot) {
   const auto pieces = scaled_pieces(ex.unfolding, 110 / ex.unfolding.model_extent);
   const auto seams = find_seams(ex.unfolding, pieces);
   const auto numbers = number_seams(pieces, seams);
-  std::vector<std::vector<FoldLine>> folds;
-  for (const ScaledPiece& p : pieces)
-    folds.push_back(fold_lines(ex.unfolding, p));
+  const auto folds = folds_of(ex.unfolding, pieces);
   const LabelOptions o;
   std::vector<double> widths;
   for (int n : numbers)
@@ -284,9 +293,7 @@ TEST(EdgeNumbers, LabelsPlacedForSomePiecesOnlyAreThoseOfAPlacementOfAll) {
   const auto seams = find_seams(ex.unfolding, pieces);
   const auto numbers = number_seams(pieces, seams);
   const TabPlan tabs = plan_tabs(pieces, seams, TabOptions{});
-  std::vector<std::vector<FoldLine>> folds;
-  for (const ScaledPiece& p : pieces)
-    folds.push_back(fold_lines(ex.unfolding, p));
+  const auto folds = folds_of(ex.unfolding, pieces);
   const LabelOptions o;
   const std::vector<Label> all = place_labels(pieces, seams, numbers, tabs, folds, {}, o);
   std::vector<int> some;

@@ -72,6 +72,13 @@ LayoutOptions at_size(double size_mm) {
   return o;
 }
 
+// On A1 paper: the same pieces whatever the options compared, none cut smaller to fit.
+LayoutOptions on_a1_at_size(double size_mm) {
+  LayoutOptions o = at_size(size_mm);
+  o.paper_mm = {594, 841};
+  return o;
+}
+
 // A piece's true body on its sheet (y down): its flat triangles through the reported placement.
 std::vector<Polygon> piece_body(const unfold::Unfolding& u, const LayoutResult& r, int piece) {
   std::vector<Polygon> triangles;
@@ -501,11 +508,9 @@ TEST(Layout, EveryPartCarriesItsLetterAndCrossPartLabelsNameTheMate) {
 // sub-millimetre edges decided it. At the size it advises now, at most 2% of the labels lack room.
 TEST(Layout, TheLabelRemedyIsDecidedByEdgesALabelCanSitBesideNotBySlivers) {
   const auto& ex = test::unfolded_example("spot_textured/spot_control_mesh.obj");
-  // A1 paper: the same pieces at both sizes, with no parts cut smaller to fit. At 100 mm, too small for
-  // its labels (at 150 mm all but 2% find a clear spot, some on their tabs).
+  // At 100 mm, too small for its labels (at 150 mm all but 2% find a clear spot, some on their tabs).
   constexpr double kAsked_mm = 100;
-  LayoutOptions o = at_size(kAsked_mm);
-  o.paper_mm = {594, 841};
+  LayoutOptions o = on_a1_at_size(kAsked_mm);
   const LayoutResult asked = layout_sheets(ex.unfolding, o);
   ASSERT_GT(asked.label_room_factor, 1);
   EXPECT_LT(asked.label_room_factor, 4) << "advises " << kAsked_mm * asked.label_room_factor << " mm";
@@ -529,9 +534,7 @@ TEST(Layout, TheLabelRemedyIsDecidedByEdgesALabelCanSitBesideNotBySlivers) {
 
 TEST(Layout, ALabelWithNoClearSpotOnItsFaceGetsItsSeamsTabWithRoomForIt) {
   const auto& ex = test::unfolded_example("penguin_500.obj");
-  // A1 paper: the same pieces with and without, none cut smaller to fit.
-  LayoutOptions o = at_size(150);
-  o.paper_mm = {594, 841};
+  LayoutOptions o = on_a1_at_size(150);
   const LayoutResult with = layout_sheets(ex.unfolding, o);
   o.tabs_for_labels = false;
   const LayoutResult without = layout_sheets(ex.unfolding, o);
@@ -549,8 +552,7 @@ TEST(Layout, ALabelWithNoClearSpotOnItsFaceGetsItsSeamsTabWithRoomForIt) {
 // as if there were no labels, exactly the estimate's, so the same paper.
 TEST(Layout, WithoutTabsForLabelsTheTabsAreThoseOfALayoutWithoutNumbers) {
   const auto& ex = test::unfolded_example("penguin_500.obj");
-  LayoutOptions o = at_size(150);
-  o.paper_mm = {594, 841};
+  LayoutOptions o = on_a1_at_size(150);
   const LayoutResult with = layout_sheets(ex.unfolding, o);
   o.tabs_for_labels = false;
   o.tab_sides_for_labels = false;
@@ -598,8 +600,7 @@ TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
 
 TEST(Layout, ALongSeamWhoseOneTabHoldsOneLabelWhileTheOtherHasNoRoomGetsItsTabSplitInTwo) {
   const auto& ex = test::unfolded_example("penguin_500.obj");
-  LayoutOptions o = at_size(100);  // small: many faces too narrow for a label beside their long edges
-  o.paper_mm = {594, 841};         // A1: the same pieces with and without, none cut smaller to fit
+  LayoutOptions o = on_a1_at_size(100);  // small: many faces too narrow for a label beside their long edges
   const LayoutResult with = layout_sheets(ex.unfolding, o);
   o.split_tabs_for_labels = false;
   const LayoutResult without = layout_sheets(ex.unfolding, o);
