@@ -318,7 +318,7 @@ class LabelPlacer {
   void collect_sides(const TabPlan& tabs, const SeamTexts& texts) {
     for (std::size_t s = 0; s < seams_.size(); ++s) {
       // The side with a tab first: its label has room there for the step mark.
-      const int first = !tabs.on_side(s, 0) && tabs.on_side(s, 1) ? 1 : 0;
+      const int first = first_labelled_side(tabs, s);
       for (int k : {first, 1 - first}) {
         const SeamSide& at = seams_[s].sides[k];
         if (at.piece < 0 || !placing_[at.piece]) continue;
@@ -647,6 +647,10 @@ class LabelPlacer {
 };
 
 }  // namespace
+
+int first_labelled_side(const TabPlan& tabs, std::size_t seam) {
+  return !tabs.on_side(seam, 0) && tabs.on_side(seam, 1) ? 1 : 0;
+}
 
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,

@@ -155,7 +155,7 @@ std::vector<Label> place_draft_labels_again(const Draft& d, const SeamTexts& tex
       if (from == &placed || !changed[l.piece]) by_side[l.seam.index()][l.side] = std::move(l);
   std::vector<Label> labels;
   for (std::size_t s = 0; s < d.seams.size(); ++s) {
-    const int first = !d.tabs.on_side(s, 0) && d.tabs.on_side(s, 1) ? 1 : 0;
+    const int first = first_labelled_side(d.tabs, s);
     for (int k : {first, 1 - first})
       if (by_side[s][k]) labels.push_back(std::move(*by_side[s][k]));
   }
@@ -672,7 +672,6 @@ void measure_label_room(const Draft& d, const unfold::Unfolding& u, const Layout
   for (const Label& l : d.labels)
     if (!has_clear_spot(l))
       r.crowded_labels.push_back({l.text, listed_seam_name(d, static_cast<int>(l.seam.index())), l.piece});
-
   double factor = asked.factor;
   LayoutOptions quiet = o;
   quiet.progress = nullptr;

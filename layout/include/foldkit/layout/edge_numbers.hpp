@@ -88,6 +88,10 @@ struct SeamTexts {
 std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                       std::span<const double> widths_mm, const LabelOptions& options);
 
+/// The side of seam `seam` whose label place_labels gives first (and which shows the step mark where it
+/// can): the side with the tab, else side 0. Labels come seam by seam, this side first.
+int first_labelled_side(const TabPlan& tabs, std::size_t seam);
+
 /// Two labels per seam (one per side). `hints` (per seam, may be empty) is printed after the number.
 /// `fold_lines` per piece are the lines labels must keep clear of, besides the outlines. Without
 /// `texts` (empty) a side prints number_text of its number. Every label first gets a spot at the
