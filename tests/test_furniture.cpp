@@ -78,3 +78,55 @@ TEST(Furniture, AFullSheetGetsNumberAndBarInTheMarginAndIsReported) {
     number = number || t.text == "1/1  cow";
   EXPECT_TRUE(number);
 }
+
+namespace {
+// An A4 sheet whose part fills the printable area but for a `gap` x `gap` mm notch at its bottom-right.
+Sheet a4_full_but_a_corner(double gap) {
+  return a4_with_part(
+      {{10, 10}, {200, 10}, {200, 287 - gap}, {200 - gap, 287 - gap}, {200 - gap, 287}, {10, 287}});
+}
+
+bool has_square(const Sheet& s) {
+  return std::any_of(s.paths.begin(), s.paths.end(), [](const Path& p) {
+    return p.role == PathRole::Sheet && p.closed && p.points_mm.size() == 4 &&
+           std::abs(std::abs(signed_area(p.points_mm)) - 25.4 * 25.4) < 1e-6;
+  });
+}
+}  // namespace
+
+TEST(Furniture, ASheetTooFullForTheBlockGetsTheSquareInASmallerGapAndItsHeadingInTheMargin) {
+  std::vector<Sheet> sheets{a4_full_but_a_corner(32), a4_with_part({{10, 10}, {50, 10}, {50, 50}})};
+  const auto crowded = add_sheet_furniture(sheets, {}, FurnitureOptions{"cow"});
+  EXPECT_TRUE(crowded.empty()) << "both sheets have their square";
+  ASSERT_TRUE(has_square(sheets[0]));
+  for (const Path& p : sheets[0].paths) {
+    if (p.role != PathRole::Sheet || !p.closed) continue;
+    for (Vec2 v : p.points_mm)
+      EXPECT_TRUE(v.x >= 168 - 1e-9 && v.y >= 255 - 1e-9) << "the square is in the notch";
+  }
+  bool heading_in_margin = false;
+  for (const Text& t : sheets[0].texts)
+    heading_in_margin = heading_in_margin || (t.text == "1/2  cow" && t.at_mm.y > 287);
+  EXPECT_TRUE(heading_in_margin);
+  EXPECT_TRUE(sheets[0].legend_mm.empty()) << "no room for the legend beside the square";
+  EXPECT_FALSE(sheets[1].legend_mm.empty()) << "so it goes on the next sheet";
+}
+
+TEST(Furniture, ANotchTooSmallForTheSquareLeavesTheSheetReported) {
+  std::vector<Sheet> sheets{a4_full_but_a_corner(20)};
+  EXPECT_EQ(add_sheet_furniture(sheets, {}, FurnitureOptions{}), std::vector<int>{0});
+  EXPECT_FALSE(has_square(sheets[0]));
+}
+
+TEST(Furniture, WithAMarginTooShallowForTheHeadingItStandsAboveTheSquare) {
+  Sheet s = a4_full_but_a_corner(60);
+  s.printable_mm = Box2{{3, 3}, {207, 294}};  // 3 mm margins: no room for a line of text below
+  s.paths.front().points_mm = {{3, 3}, {207, 3}, {207, 234}, {147, 234}, {147, 294}, {3, 294}};
+  std::vector<Sheet> sheets{s};
+  EXPECT_TRUE(add_sheet_furniture(sheets, {}, FurnitureOptions{"cow"}).empty());
+  bool heading = false;
+  for (const Text& t : sheets[0].texts)
+    heading = heading || (t.text == "1/1  cow" && t.at_mm.y < 294 && t.at_mm.x > 147);
+  EXPECT_TRUE(heading) << "in the notch, with the square";
+  EXPECT_TRUE(has_square(sheets[0]));
+}

@@ -17,6 +17,9 @@ constexpr double kBlockWidth_mm = 58;
 constexpr double kBlockHeight_mm = 44;
 constexpr double kStep_mm = 4;
 constexpr double kSmallText_mm = 2.5;
+constexpr double kHeading_mm = 17;  ///< the number, name, parts and bar above the square
+/// The legend's own block when it cannot share one with the square: its five rows and their names.
+constexpr Vec2 kLegendBlock_mm{31, 27};
 
 Polygon rect(const Box2& b) {
   return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
@@ -68,11 +71,10 @@ bool is_free(const Occupied& o, const Box2& block, double spacing) {
   return true;
 }
 
-// Candidate corners of the printable area, bottom-right first (packing fills from the top-left), then
-// along the bottom and right edges, then the other corners.
-std::optional<Box2> free_block(const Sheet& sheet, const Occupied& o, double spacing) {
+// A free place for a block of `size`: the corners of the printable area, bottom-right first (packing
+// fills from the top-left), then along the bottom and right edges, then the other corners and edges.
+std::optional<Box2> free_spot(const Sheet& sheet, const Occupied& o, Vec2 size, double spacing) {
   const Box2 area = sheet.printable_mm;
-  const Vec2 size = furniture_size_mm();
   if (area.width() < size.x || area.height() < size.y) return std::nullopt;
   auto at = [&](double x, double y) { return Box2{{x, y}, {x + size.x, y + size.y}}; };
   const double right = area.max.x - size.x, bottom = area.max.y - size.y;
@@ -88,6 +90,12 @@ std::optional<Box2> free_block(const Sheet& sheet, const Occupied& o, double spa
   for (const Box2& c : candidates)
     if (is_free(o, c, spacing)) return c;
   return std::nullopt;
+}
+
+// A block placed on the sheet: later blocks keep clear of it.
+void occupy(Occupied& o, const Box2& block) {
+  o.shapes.push_back(rect(block));
+  o.boxes.push_back(block);
 }
 
 void add_text(Sheet& sheet, std::string text, Vec2 at, double height) {
@@ -132,55 +140,134 @@ std::string title(std::size_t k, std::size_t n, const std::string& name) {
   return t;
 }
 
+// The sheet's number and name, its parts and the 50 mm bar, in the top 15 mm of a block from `o`.
+void draw_heading(Sheet& sheet, Vec2 o, const std::string& heading, const std::string& parts,
+                  const FurnitureOptions& options) {
+  add_text(sheet, heading, o + Vec2{0, options.text_mm}, options.text_mm);
+  if (!parts.empty()) add_text(sheet, parts, o + Vec2{0, 7.2}, kSmallText_mm);
+  add_text(sheet, "50 mm", o + Vec2{0.5 * kBar_mm - 4, 10.5}, kSmallText_mm);
+  add_bar(sheet, o + Vec2{0, 13});
+}
+
+// The 1 in square with its top-left corner at `sq`, named inside.
+void draw_square(Sheet& sheet, Vec2 sq) {
+  add_line(sheet, {sq, sq + Vec2{kInch_mm, 0}, sq + Vec2{kInch_mm, kInch_mm}, sq + Vec2{0, kInch_mm}}, true);
+  add_text(sheet, "1 in", sq + Vec2{0.5 * kInch_mm - 3, 0.5 * kInch_mm + 1.2}, kSmallText_mm);
+}
+
+bool margin_holds_heading(double bottom_margin_mm, const FurnitureOptions& options) {
+  return bottom_margin_mm >= options.text_mm + 2;
+}
+
+// Number, name and bar in the bottom margin when it is deep enough (the sheet had no room for the whole
+// block); false when it is not.
+bool draw_heading_in_margin(Sheet& sheet, const std::string& heading, const std::string& parts,
+                            std::span<const Box2> keep_out, const FurnitureOptions& options) {
+  const double margin = sheet.size_mm.y - sheet.printable_mm.max.y;
+  if (!margin_holds_heading(margin, options)) return false;
+  const double base = sheet.printable_mm.max.y + 0.5 * (margin + options.text_mm);
+  double x = sheet.printable_mm.min.x;
+  for (const Box2& z : keep_out)
+    if (z.max.y > sheet.printable_mm.max.y && z.min.x <= x + 1e-9)
+      x = std::max(x, z.max.x + options.spacing_mm);
+  add_text(sheet, heading, {x, base}, options.text_mm);
+  const double parts_x = x + label_width_mm(heading, options.text_mm, LabelOptions{}) + 4;
+  const double bar_x = sheet.printable_mm.max.x - kBar_mm;
+  add_bar(sheet, {bar_x, base - 0.5 * options.text_mm});
+  // The bar's name ends before its left tick: set in the sheet's font (not the labels' narrow one) it
+  // is about 12 mm wide.
+  constexpr double kBarName_mm = 14;
+  const double name_x = bar_x - kBarName_mm;
+  add_text(sheet, "50 mm", {name_x, base}, kSmallText_mm);
+  if (!parts.empty() && parts_x + label_width_mm(parts, kSmallText_mm, LabelOptions{}) < name_x - 2)
+    add_text(sheet, parts, {parts_x, base}, kSmallText_mm);
+  return true;
+}
+
+// The square's own block, with the heading above it when the margin cannot hold that.
+Vec2 square_block_mm(bool heading_in_margin) {
+  return heading_in_margin ? Vec2{kInch_mm + 2, kInch_mm + 1} : Vec2{kBar_mm + 2, kHeading_mm + kInch_mm + 1};
+}
+
+// What one sheet got.
+struct Furnished {
+  bool square = false;
+  bool legend = false;
+};
+
+// The whole block in one free spot: heading and bar on top, the square below, the legend beside it.
+std::optional<Furnished> furnish_in_one_block(Sheet& sheet, Occupied& occupied, const std::string& heading,
+                                              const std::string& parts, bool with_legend,
+                                              const FurnitureOptions& options) {
+  const std::optional<Box2> block = free_spot(sheet, occupied, furniture_size_mm(), options.spacing_mm);
+  if (!block) return std::nullopt;
+  occupy(occupied, *block);
+  const Vec2 o = block->min + Vec2{1, 0};
+  draw_heading(sheet, o, heading, parts, options);
+  const Vec2 sq = o + Vec2{0, kHeading_mm};
+  draw_square(sheet, sq);
+  if (with_legend) sheet.legend_mm = Box2{sq + Vec2{kInch_mm + 2, 0}, block->max};
+  return Furnished{true, with_legend};
+}
+
+// A sheet too full for the block: the heading goes in the bottom margin, and the square and the legend
+// each take a smaller free spot of their own (a gap beside a part often holds a 1 in square where no
+// 58 mm block fits).
+Furnished furnish_in_pieces(Sheet& sheet, Occupied& occupied, const std::string& heading,
+                            const std::string& parts, bool with_legend, std::span<const Box2> keep_out,
+                            const FurnitureOptions& options) {
+  Furnished got;
+  const bool heading_in_margin = draw_heading_in_margin(sheet, heading, parts, keep_out, options);
+  // Without a margin deep enough the heading needs a spot of its own, above the square.
+  const double heading_mm = heading_in_margin ? 0 : kHeading_mm;
+  const Vec2 square_block = square_block_mm(heading_in_margin);
+  if (const std::optional<Box2> spot = free_spot(sheet, occupied, square_block, options.spacing_mm)) {
+    occupy(occupied, *spot);
+    const Vec2 o = spot->min + Vec2{1, 0};
+    if (!heading_in_margin) draw_heading(sheet, o, heading, parts, options);
+    draw_square(sheet, o + Vec2{0, heading_mm});
+    got.square = true;
+  }
+  if (!with_legend) return got;
+  if (const std::optional<Box2> spot = free_spot(sheet, occupied, kLegendBlock_mm, options.spacing_mm)) {
+    occupy(occupied, *spot);
+    sheet.legend_mm = Box2{spot->min + Vec2{1, 0}, spot->max};
+    got.legend = true;
+  }
+  return got;
+}
+
 }  // namespace
 
 Vec2 furniture_size_mm() {
   return {kBlockWidth_mm, kBlockHeight_mm};
 }
 
+Vec2 least_furniture_block_mm(double bottom_margin_mm, const FurnitureOptions& options) {
+  return square_block_mm(margin_holds_heading(bottom_margin_mm, options));
+}
+
 std::vector<int> add_sheet_furniture(std::span<Sheet> sheets, std::span<const Box2> keep_out,
                                      const FurnitureOptions& options) {
-  std::vector<int> without_room;
+  std::vector<int> without_square;
   bool legend_placed = false;
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     Sheet& sheet = sheets[k];
-    const Occupied occupied = occupied_on(sheet, keep_out);
+    Occupied occupied = occupied_on(sheet, keep_out);
     const std::string heading = title(k, sheets.size(), options.model_name);
     const std::string parts = parts_line(sheet);
-    if (const std::optional<Box2> block = free_block(sheet, occupied, options.spacing_mm)) {
-      const Vec2 o = block->min + Vec2{1, 0};
-      add_text(sheet, heading, o + Vec2{0, options.text_mm}, options.text_mm);
-      if (!parts.empty()) add_text(sheet, parts, o + Vec2{0, 7.2}, kSmallText_mm);
-      add_text(sheet, "50 mm", o + Vec2{0.5 * kBar_mm - 4, 10.5}, kSmallText_mm);
-      add_bar(sheet, o + Vec2{0, 13});
-      const Vec2 sq = o + Vec2{0, 17};
-      add_line(sheet, {sq, sq + Vec2{kInch_mm, 0}, sq + Vec2{kInch_mm, kInch_mm}, sq + Vec2{0, kInch_mm}},
-               true);
-      add_text(sheet, "1 in", sq + Vec2{0.5 * kInch_mm - 3, 0.5 * kInch_mm + 1.2}, kSmallText_mm);
-      // The legend's place beside the square: the renderer draws it in its own line styles. It goes on
-      // the first sheet, or the first with a free corner when that one is full.
-      if (!legend_placed) sheet.legend_mm = Box2{sq + Vec2{kInch_mm + 2, 0}, block->max};
-      legend_placed = true;
-      continue;
-    }
-    without_room.push_back(static_cast<int>(k));
-    // No free corner: number, name and bar in the bottom margin when it is deep enough.
-    const double margin = sheet.size_mm.y - sheet.printable_mm.max.y;
-    if (margin < options.text_mm + 2) continue;
-    const double base = sheet.printable_mm.max.y + 0.5 * (margin + options.text_mm);
-    double x = sheet.printable_mm.min.x;
-    for (const Box2& z : keep_out)
-      if (z.max.y > sheet.printable_mm.max.y && z.min.x <= x + 1e-9)
-        x = std::max(x, z.max.x + options.spacing_mm);
-    add_text(sheet, heading, {x, base}, options.text_mm);
-    const double parts_x = x + label_width_mm(heading, options.text_mm, LabelOptions{}) + 4;
-    const double bar_x = sheet.printable_mm.max.x - kBar_mm;
-    add_bar(sheet, {bar_x, base - 0.5 * options.text_mm});
-    add_text(sheet, "50 mm", {bar_x - 12, base}, kSmallText_mm);
-    if (!parts.empty() && parts_x + label_width_mm(parts, kSmallText_mm, LabelOptions{}) < bar_x - 14)
-      add_text(sheet, parts, {parts_x, base}, kSmallText_mm);
+    // The legend goes on the first sheet, or the first after it with room.
+    const bool with_legend = !legend_placed;
+    Furnished got;
+    if (const std::optional<Furnished> block =
+            furnish_in_one_block(sheet, occupied, heading, parts, with_legend, options))
+      got = *block;
+    else
+      got = furnish_in_pieces(sheet, occupied, heading, parts, with_legend, keep_out, options);
+    legend_placed = legend_placed || got.legend;
+    if (!got.square) without_square.push_back(static_cast<int>(k));
   }
-  return without_room;
+  return without_square;
 }
 
 }  // namespace foldkit::layout

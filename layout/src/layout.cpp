@@ -864,17 +864,23 @@ void emit_assembly_blocks(const Packing& k, double paper_h, std::vector<Sheet>& 
   }
 }
 
-void emit_furniture(const LayoutOptions& o, LayoutResult& r) {
+FurnitureOptions furniture_options_of(const LayoutOptions& o) {
   FurnitureOptions furniture;
   furniture.model_name = o.model_name;
   furniture.spacing_mm = o.pack.spacing_mm;
+  return furniture;
+}
+
+// Returns the sheets that got no 1 in square.
+std::vector<int> emit_furniture(const LayoutOptions& o, LayoutResult& r) {
   std::vector<Box2> keep_out;
   if (o.regmarks) keep_out = regmark_keep_out(o.paper_mm, o.regmark);
-  const std::vector<int> crowded = add_sheet_furniture(r.sheets, keep_out, furniture);
+  const std::vector<int> crowded = add_sheet_furniture(r.sheets, keep_out, furniture_options_of(o));
   if (!crowded.empty())
-    r.notes.push_back(
-        std::to_string(crowded.size()) +
-        " sheet(s) had no free corner for the 1 in scale square (the 50 mm bar is in the margin)");
+    r.notes.push_back(std::to_string(crowded.size()) +
+                      " sheet(s) without the 1 in scale square: no free spot, and a corner kept for it would "
+                      "cost a sheet (the 50 mm bar is in the margin)");
+  return crowded;
 }
 
 // Each sheet's coverage, and the sums over all sheets.
@@ -912,8 +918,9 @@ void note_dropped_tabs(const Draft& d, const LayoutOptions& o, LayoutResult& r) 
 }
 
 // The sheets of a complete packing: pieces, assembly list, furniture, then the figures and notes.
-void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, const Packing& k,
-                 LayoutResult& r) {
+// Returns the sheets that got no 1 in square.
+std::vector<int> emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, const Packing& k,
+                             LayoutResult& r) {
   const double paper_h = o.paper_mm.y;
   r.paper_height_mm = paper_h;
   report(o, "labelling", 0, 1);
@@ -942,7 +949,7 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
     if (d.tabs.is_split(s))
       r.sheet_stats[k.packed.placements[d.seams[s].sides[0].piece].sheet].split_tabs += 1;
   emit_assembly_blocks(k, paper_h, r.sheets);
-  if (o.furniture) emit_furniture(o, r);
+  const std::vector<int> without_square = o.furniture ? emit_furniture(o, r) : std::vector<int>{};
   const Box2 area = packing_area(o);
   total_stats(area.width() * area.height(), r);
   note_dropped_tabs(d, o, r);
@@ -958,6 +965,98 @@ void emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o, Draft& d, c
     r.assembly.push_back({static_cast<int>(step) + 1, d.printed[s], d.seams[s].fold_angle_rad,
                           d.seams[s].edge, listed_seam_name(d, s)});
   }
+  return without_square;
+}
+
+// The packing options with the bottom-right corner of every sheet kept free for the least furniture
+// block (the 1 in square), in the packing frame (y up: the paper's bottom is the area's min.y).
+PackOptions with_corner_kept(PackOptions p, const LayoutOptions& o) {
+  const Box2 printable = printable_area(o);
+  // The furniture finds its spot with its own spacing test: a millimetre more keeps the two from
+  // disagreeing over a part that just touches the corner's edge.
+  constexpr double kSlack_mm = 1;
+  const Vec2 block = least_furniture_block_mm(o.paper_mm.y - printable.max.y, furniture_options_of(o)) +
+                     Vec2{kSlack_mm, kSlack_mm};
+  const Box2 area = p.area_mm;
+  p.keep_out_mm.push_back(Box2{{area.max.x - block.x, area.min.y}, {area.max.x, area.min.y + block.y}});
+  return p;
+}
+
+// An empty result at the scale of `r`, for a layout of the same pieces.
+LayoutResult scaled_like(const LayoutResult& r) {
+  LayoutResult again;
+  again.scale_mm_per_unit = r.scale_mm_per_unit;
+  again.size_mm = r.size_mm;
+  return again;
+}
+
+// The options of a layout again with a corner kept for the square, its stages named after `prefix`: a
+// stage's counts only rise.
+LayoutOptions corner_stages(const LayoutOptions& o, const char* prefix) {
+  LayoutOptions second = o;
+  if (o.progress)
+    second.progress = [report = o.progress, prefix](const LayoutProgress& p) {
+      report({prefix + p.stage, p.done, p.total});
+    };
+  return second;
+}
+
+// The pieces of each sheet without its square packed again onto that sheet alone, with a corner kept for
+// it. No piece changes sheet, so the letters and the labels' texts stay. False when no sheet's pieces fit.
+bool keep_corners_on_their_sheets(const LayoutOptions& o, const std::vector<int>& without_square,
+                                  Packing& k) {
+  PackOptions one_sheet = with_corner_kept(pack_options_in_use(o, packing_area(o), 1), o);
+  one_sheet.progress = nullptr;  // a sheet's pieces pack in a moment
+  bool moved = false;
+  for (int sheet : without_square) {
+    std::vector<std::size_t> on_sheet;
+    std::vector<PackItem> items;
+    for (std::size_t i = 0; i < k.items.size(); ++i) {
+      if (k.packed.placements[i].sheet != sheet) continue;
+      on_sheet.push_back(i);
+      items.push_back(k.items[i]);
+    }
+    const PackResult alone = pack_items(items, one_sheet);
+    if (!alone.unplaced.empty() || alone.sheet_count != 1) continue;
+    for (std::size_t j = 0; j < on_sheet.size(); ++j)
+      k.packed.placements[on_sheet[j]].transform = alone.placements[j].transform;
+    moved = true;
+  }
+  return moved;
+}
+
+// Pieces may move from sheet to sheet: letters change, and so do the labels that name a mate.
+constexpr int kMostFacesToRelabel = 1500;
+
+// A complete layout left some sheets without their scale check: each such sheet is packed again with a
+// corner kept for the square (its own pieces, onto it alone; then, where that left a sheet without and
+// the model has at most kMostFacesToRelabel faces, all pieces onto no more sheets), and the layout with
+// the new placements replaces `r` when fewer sheets go without. A square is not worth a sheet of paper.
+// `drawn` is the draft as drawn, `settled` with its letters and labels for the first packing.
+void keep_corner_for_square(const unfold::Unfolding& u, const LayoutOptions& o, const Draft& drawn,
+                            const Draft& settled, const Packing& first, std::vector<int> without_square,
+                            LayoutResult& r) {
+  if (without_square.empty() || (o.deadline && std::chrono::steady_clock::now() > *o.deadline)) return;
+  const LayoutOptions second = corner_stages(o, kCornerStage);
+  Packing k = first;
+  if (keep_corners_on_their_sheets(second, without_square, k)) {
+    Draft d = settled;
+    LayoutResult again = scaled_like(r);
+    std::vector<int> still = emit_sheets(u, second, d, k, again);
+    if (still.size() < without_square.size()) {
+      r = std::move(again);
+      without_square = std::move(still);
+    }
+  }
+  if (without_square.empty() || u.num_faces() > kMostFacesToRelabel) return;
+  const LayoutOptions third = corner_stages(o, kCornersStage);
+  k = first;
+  k.packed = pack_items(
+      k.items, with_corner_kept(pack_options_in_use(third, packing_area(o), first.packed.sheet_count), o));
+  if (!k.packed.unplaced.empty() || k.packed.sheet_count > first.packed.sheet_count) return;
+  Draft d = drawn;
+  LayoutResult again = scaled_like(r);
+  if (emit_sheets(u, third, d, k, again).size() < without_square.size()) r = std::move(again);
 }
 
 // One layout at `scale`: drawn, packed (on at most max_sheets when set) and emitted. Incomplete when
@@ -978,7 +1077,10 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     return attempt;
   }
   attempt.complete = true;
-  emit_sheets(u, o, d, k, r);
+  std::optional<Draft> drawn;
+  if (o.furniture) drawn = d;  // emitting settles the letters and labels on the draft
+  std::vector<int> without_square = emit_sheets(u, o, d, k, r);
+  if (drawn) keep_corner_for_square(u, o, *drawn, d, k, std::move(without_square), r);
   return attempt;
 }
 

@@ -20,9 +20,15 @@
 
 namespace foldkit::layout {
 
+/// A layout that left a sheet without its 1 in square packs that sheet's pieces again with a corner kept
+/// for it, then maybe all pieces: those stages are named with these in front ("keeping a corner:
+/// labelling", "keeping a corner on every sheet: packing", ...).
+inline constexpr const char* kCornerStage = "keeping a corner: ";
+inline constexpr const char* kCornersStage = "keeping a corner on every sheet: ";
+
 /// How far a layout has come: `done` of `total` steps of `stage` ("drawing", "packing", "labelling",
-/// "sheets"). Within one stage `done` never falls and ends at `total`; a layout may go through its stages
-/// more than once (--fit tries several scales).
+/// "sheets", then maybe the kCornerStage and kCornersStage ones). Within one stage `done` never falls and
+/// ends at `total`; a layout may go through its stages more than once (--fit tries several scales).
 struct LayoutProgress {
   std::string stage;
   long done = 0;
