@@ -108,8 +108,11 @@ TEST(Furniture, ASheetTooFullForTheBlockGetsTheSquareInASmallerGapAndItsHeadingI
   for (const Text& t : sheets[0].texts)
     heading_in_margin = heading_in_margin || (t.text == "1/2  cow" && t.at_mm.y > 287);
   EXPECT_TRUE(heading_in_margin);
-  EXPECT_TRUE(sheets[0].legend_mm.empty()) << "no room for the legend beside the square";
-  EXPECT_FALSE(sheets[1].legend_mm.empty()) << "so it goes on the next sheet";
+  // No room for the legend beside the square: one row in the top margin of the first sheet.
+  EXPECT_TRUE(sheets[0].legend_in_row);
+  EXPECT_LE(sheets[0].legend_mm.max.y, sheets[0].printable_mm.min.y);
+  EXPECT_GE(sheets[0].legend_mm.min.y, 0);
+  EXPECT_TRUE(sheets[1].legend_mm.empty()) << "one legend";
 }
 
 TEST(Furniture, ANotchTooSmallForTheSquareLeavesTheSheetReported) {
@@ -129,4 +132,15 @@ TEST(Furniture, WithAMarginTooShallowForTheHeadingItStandsAboveTheSquare) {
     heading = heading || (t.text == "1/1  cow" && t.at_mm.y < 294 && t.at_mm.x > 147);
   EXPECT_TRUE(heading) << "in the notch, with the square";
   EXPECT_TRUE(has_square(sheets[0]));
+}
+
+TEST(Furniture, AFullFirstSheetWhoseTopMarginIsTooShallowLeavesTheLegendToTheNextSheet) {
+  Sheet full = a4_full_but_a_corner(32);
+  full.printable_mm = Box2{{10, 4}, {200, 287}};  // 4 mm at the top: no room for a row of 4 mm text
+  full.paths.front().points_mm = {{10, 4}, {200, 4}, {200, 255}, {168, 255}, {168, 287}, {10, 287}};
+  std::vector<Sheet> sheets{full, a4_with_part({{10, 10}, {50, 10}, {50, 50}})};
+  add_sheet_furniture(sheets, {}, FurnitureOptions{});
+  EXPECT_TRUE(sheets[0].legend_mm.empty());
+  EXPECT_FALSE(sheets[1].legend_mm.empty());
+  EXPECT_FALSE(sheets[1].legend_in_row) << "stacked in the block of the next sheet";
 }

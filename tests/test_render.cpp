@@ -426,3 +426,39 @@ TEST(Render, ReplacesAnExistingFile) {
   render_sheets({sample_sheet({148, 210})}, pdf);
   EXPECT_NE(run("pdfinfo '" + pdf.string() + "'").find("Pages:           1"), std::string::npos);
 }
+
+namespace {
+// The legend's names in an SVG with where they start, in the order written.
+std::vector<std::pair<std::string, Vec2>> legend_names(const std::string& svg) {
+  static const std::regex name(
+      R"re(<text x="([0-9.]+)" y="([0-9.]+)"[^>]*>(cut|mountain fold|valley fold|glue tab)</text>)re");
+  std::vector<std::pair<std::string, Vec2>> names;
+  for (std::sregex_iterator it(svg.begin(), svg.end(), name), end; it != end; ++it)
+    names.push_back({(*it)[3], Vec2{std::stod((*it)[1]), std::stod((*it)[2])}});
+  return names;
+}
+}  // namespace
+
+TEST(RenderSvg, TheLegendIsStackedInItsBoxOrSideBySideInARow) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  Sheet stacked = sample_sheet({210, 297});
+  stacked.legend_mm = foldkit::Box2{{150, 250}, {180, 277}};
+  Sheet row = stacked;
+  row.legend_mm = foldkit::Box2{{10, 3}, {154, 7}};
+  row.legend_in_row = true;
+  const auto written = render_sheets({stacked, row}, dir / "legend.svg");
+  ASSERT_EQ(written.size(), 2u);
+  const auto column = legend_names(slurp(written[0]));
+  const auto side_by_side = legend_names(slurp(written[1]));
+  ASSERT_EQ(column.size(), 4u);
+  ASSERT_EQ(side_by_side.size(), 4u);
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_EQ(column[i].second.x, column[0].second.x);
+    EXPECT_GT(column[i].second.y, column[i - 1].second.y) << column[i].first;
+    EXPECT_EQ(side_by_side[i].second.y, side_by_side[0].second.y);
+    // A quarter of the row each: room for the longest name after its sample.
+    EXPECT_NEAR(side_by_side[i].second.x - side_by_side[i - 1].second.x, 36, 1e-9) << side_by_side[i].first;
+  }
+  for (const auto& [name, at] : side_by_side)
+    EXPECT_TRUE(at.y > 3 && at.y < 7 + 1.5) << name << " stays in the margin row";
+}

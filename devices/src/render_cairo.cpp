@@ -166,8 +166,7 @@ void draw_legend(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, 
   for (std::size_t i = 0; i < kLegend.size(); ++i) {
     const LegendRow& row = kLegend[i];
     const RoleStyle& style = options.style(row.role);
-    const double y = sheet.legend_mm.min.y + kLegendRow_mm * (static_cast<double>(i) + 0.5);
-    const double x = sheet.legend_mm.min.x;
+    const auto [x, y] = legend_entry_mm(sheet, i);
     cairo_new_path(cr);
     if (row.box) {
       cairo_rectangle(cr, x, y - 1.5, kLegendSample_mm, 3);

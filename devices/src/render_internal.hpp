@@ -46,6 +46,17 @@ inline constexpr std::array<LegendRow, 4> kLegend = {{{PathRole::Cut, "cut", fal
                                                       {PathRole::Tab, "glue tab", true}}};
 /// Row pitch and sample length of the legend (mm), and its text's cap height.
 inline constexpr double kLegendRow_mm = 5.5, kLegendSample_mm = 8, kLegendText_mm = 2.2;
+
+/// Where entry `i` of the legend starts (its sample's left end, on the sample's centre line): stacked
+/// rows in the box, or side by side along it (Sheet::legend_in_row).
+inline Vec2 legend_entry_mm(const Sheet& sheet, std::size_t i) {
+  const Box2& box = sheet.legend_mm;
+  const double at = static_cast<double>(i);
+  if (sheet.legend_in_row)
+    return {box.min.x + at * box.width() / static_cast<double>(kLegend.size()),
+            0.5 * (box.min.y + box.max.y)};
+  return {box.min.x, box.min.y + kLegendRow_mm * (at + 0.5)};
+}
 /// Stroke width of the white halo under texts on coloured sheets, per millimetre of cap height.
 inline constexpr double kHaloPerCap = 0.35;
 

@@ -174,8 +174,7 @@ void write_legend(std::ostream& out, const Sheet& sheet, const RenderOptions& op
   for (std::size_t i = 0; i < kLegend.size(); ++i) {
     const LegendRow& row = kLegend[i];
     const RoleStyle& style = options.style(row.role);
-    const double y = sheet.legend_mm.min.y + kLegendRow_mm * (static_cast<double>(i) + 0.5);
-    const double x = sheet.legend_mm.min.x;
+    const auto [x, y] = legend_entry_mm(sheet, i);
     out << "    <path d=\"M" << num(x) << " " << num(row.box ? y - 1.5 : y) << " L"
         << num(x + kLegendSample_mm) << " " << num(row.box ? y - 1.5 : y);
     if (row.box)

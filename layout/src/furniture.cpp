@@ -17,9 +17,13 @@ constexpr double kBlockWidth_mm = 58;
 constexpr double kBlockHeight_mm = 44;
 constexpr double kStep_mm = 4;
 constexpr double kSmallText_mm = 2.5;
-constexpr double kHeading_mm = 17;  ///< the number, name, parts and bar above the square
+constexpr double kLeastText_mm = 2;  ///< the least cap height a furniture text is shrunk to
+constexpr double kHeading_mm = 17;   ///< the number, name, parts and bar above the square
 /// The legend's own block when it cannot share one with the square: its five rows and their names.
 constexpr Vec2 kLegendBlock_mm{31, 27};
+/// The legend in one row in the top margin: four entries of a sample and a name ("mountain fold" is the
+/// longest, about 23 mm in the sheet's font), 4 mm high.
+constexpr Vec2 kLegendRow_mm{144, 4};
 
 Polygon rect(const Box2& b) {
   return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
@@ -27,6 +31,13 @@ Polygon rect(const Box2& b) {
 
 Box2 grown(const Box2& b, double d) {
   return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
+}
+
+// The width of a furniture text: set in the sheet's font, not the labels' narrow family, whose advances
+// label_width_mm knows (DejaVu Sans' digits are 0.87 of the cap height against 0.67).
+double sheet_text_width_mm(const std::string& text, double cap_mm) {
+  constexpr double kWiderThanLabels = 0.87 / 0.67;
+  return kWiderThanLabels * label_width_mm(text, cap_mm, LabelOptions{});
 }
 
 // What the block must keep clear of on one sheet: closed part and tab outlines, text blocks that lie in
@@ -171,7 +182,7 @@ bool draw_heading_in_margin(Sheet& sheet, const std::string& heading, const std:
     if (z.max.y > sheet.printable_mm.max.y && z.min.x <= x + 1e-9)
       x = std::max(x, z.max.x + options.spacing_mm);
   add_text(sheet, heading, {x, base}, options.text_mm);
-  const double parts_x = x + label_width_mm(heading, options.text_mm, LabelOptions{}) + 4;
+  const double parts_x = x + sheet_text_width_mm(heading, options.text_mm) + 4;
   const double bar_x = sheet.printable_mm.max.x - kBar_mm;
   add_bar(sheet, {bar_x, base - 0.5 * options.text_mm});
   // The bar's name ends before its left tick: set in the sheet's font (not the labels' narrow one) it
@@ -179,14 +190,45 @@ bool draw_heading_in_margin(Sheet& sheet, const std::string& heading, const std:
   constexpr double kBarName_mm = 14;
   const double name_x = bar_x - kBarName_mm;
   add_text(sheet, "50 mm", {name_x, base}, kSmallText_mm);
-  if (!parts.empty() && parts_x + label_width_mm(parts, kSmallText_mm, LabelOptions{}) < name_x - 2)
-    add_text(sheet, parts, {parts_x, base}, kSmallText_mm);
+  if (parts.empty()) return true;
+  // The parts line fits between the heading and the bar, a little smaller if need be; a long one goes
+  // to the top margin's right end.
+  for (double cap : {kSmallText_mm, kLeastText_mm}) {
+    if (parts_x + sheet_text_width_mm(parts, cap) >= name_x - 2) continue;
+    add_text(sheet, parts, {parts_x, base}, cap);
+    return true;
+  }
+  const double top = sheet.printable_mm.min.y;
+  const Box2 line{
+      {sheet.printable_mm.max.x - sheet_text_width_mm(parts, kSmallText_mm), 0.5 * (top - kSmallText_mm)},
+      {sheet.printable_mm.max.x, 0.5 * (top + kSmallText_mm)}};
+  if (top < kSmallText_mm + 2 || line.min.x < sheet.printable_mm.min.x ||
+      std::any_of(keep_out.begin(), keep_out.end(), [&](const Box2& z) { return z.overlaps(line); }))
+    return true;
+  add_text(sheet, parts, {line.min.x, line.max.y}, kSmallText_mm);
   return true;
 }
 
 // The square's own block, with the heading above it when the margin cannot hold that.
 Vec2 square_block_mm(bool heading_in_margin) {
   return heading_in_margin ? Vec2{kInch_mm + 2, kInch_mm + 1} : Vec2{kBar_mm + 2, kHeading_mm + kInch_mm + 1};
+}
+
+// The first sheet had no spot for the legend: it goes in one row in the top margin, where that is deep
+// enough and clear of the mark zones. False when it is not.
+bool legend_in_top_margin(Sheet& sheet, std::span<const Box2> keep_out) {
+  const double margin = sheet.printable_mm.min.y;
+  if (margin < kLegendRow_mm.y + 2 || sheet.printable_mm.width() < kLegendRow_mm.x) return false;
+  const Vec2 at{sheet.printable_mm.min.x, 0.5 * (margin - kLegendRow_mm.y)};
+  const Box2 row{at, at + kLegendRow_mm};
+  for (const Box2& z : keep_out)
+    if (z.overlaps(row)) return false;
+  // A parts line may have gone to the top margin already.
+  for (const Text& t : sheet.texts)
+    if (t.role == PathRole::Sheet && t.at_mm.y < margin && t.at_mm.x < row.max.x + 2) return false;
+  sheet.legend_mm = row;
+  sheet.legend_in_row = true;
+  return true;
 }
 
 // What one sheet got.
@@ -264,6 +306,8 @@ std::vector<int> add_sheet_furniture(std::span<Sheet> sheets, std::span<const Bo
       got = *block;
     else
       got = furnish_in_pieces(sheet, occupied, heading, parts, with_legend, keep_out, options);
+    // The first sheet carries the legend: in its top margin rather than on a later sheet.
+    if (k == 0 && with_legend && !got.legend) got.legend = legend_in_top_margin(sheet, keep_out);
     legend_placed = legend_placed || got.legend;
     if (!got.square) without_square.push_back(static_cast<int>(k));
   }

@@ -95,6 +95,9 @@ struct Sheet {
   /// Where the renderer draws a small legend of its line styles (cut, mountain, valley, tab); empty
   /// for none. Layout keeps the box free; only the renderer knows the styles.
   Box2 legend_mm;
+  /// The legend's four entries side by side, each in a quarter of the box's width (a row in the top
+  /// margin of a sheet without room for the stacked legend), rather than stacked.
+  bool legend_in_row = false;
   /// Colour under everything else, in order (faces, then tabs); empty for a white sheet.
   std::vector<Fill> fills;
   std::vector<SheetImage> images;  ///< the textures `fills` refer to
