@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "foldkit/layout/furniture.hpp"
+#include "foldkit/layout/label_text.hpp"
 #include "foldkit/layout/polygon.hpp"
 
 using namespace foldkit;
@@ -143,4 +144,26 @@ TEST(Furniture, AFullFirstSheetWhoseTopMarginIsTooShallowLeavesTheLegendToTheNex
   EXPECT_TRUE(sheets[0].legend_mm.empty());
   EXPECT_FALSE(sheets[1].legend_mm.empty());
   EXPECT_FALSE(sheets[1].legend_in_row) << "stacked in the block of the next sheet";
+}
+
+TEST(Furniture, ALongPartsLineInTheMarginKeepsClearOfTheHeading) {
+  Sheet full = a4_with_part({{10, 10}, {200, 10}, {200, 287}, {10, 287}});
+  // Every other letter: thirteen parts that no range shortens.
+  for (int rank = 0; rank < 26; rank += 2)
+    full.texts.push_back(Text{piece_letter(rank), {100, 100}, 5, 0, PathRole::Piece, rank});
+  std::vector<Sheet> sheets{full};
+  add_sheet_furniture(sheets, {}, FurnitureOptions{"a model with a long name"});
+  const Text* heading = nullptr;
+  const Text* parts = nullptr;
+  for (const Text& t : sheets[0].texts) {
+    if (t.text.starts_with("1/1")) heading = &t;
+    if (t.text.starts_with("parts A, C")) parts = &t;
+  }
+  ASSERT_NE(heading, nullptr);
+  ASSERT_NE(parts, nullptr);
+  EXPECT_GE(parts->height_mm, 2.0) << "never below the least legible size";
+  // "1/1  a model with a long name" in DejaVu Sans at 3 mm cap height is about 61 mm long.
+  const bool beside = parts->at_mm.y > 287 && parts->at_mm.x - heading->at_mm.x >= 60;
+  const bool above = parts->at_mm.y < 10;
+  EXPECT_TRUE(beside || above) << parts->at_mm.x << " " << parts->at_mm.y;
 }
