@@ -1001,6 +1001,16 @@ LayoutOptions corner_stages(const LayoutOptions& o, const char* prefix) {
   return second;
 }
 
+// A packing the layout can do without: past the deadline it gives up (nullopt) instead of throwing, so a
+// complete layout is never lost to a late extra.
+std::optional<PackResult> pack_if_in_time(std::span<const PackItem> items, const PackOptions& p) {
+  try {
+    return pack_items(items, p);
+  } catch (const LayoutError&) {
+    return std::nullopt;
+  }
+}
+
 // The pieces of each sheet without its square packed again onto that sheet alone, with a corner kept for
 // it. No piece changes sheet, so the letters and the labels' texts stay. False when no sheet's pieces fit.
 bool keep_corners_on_their_sheets(const LayoutOptions& o, const std::vector<int>& without_square,
@@ -1016,10 +1026,11 @@ bool keep_corners_on_their_sheets(const LayoutOptions& o, const std::vector<int>
       on_sheet.push_back(i);
       items.push_back(k.items[i]);
     }
-    const PackResult alone = pack_items(items, one_sheet);
-    if (!alone.unplaced.empty() || alone.sheet_count != 1) continue;
+    const std::optional<PackResult> alone = pack_if_in_time(items, one_sheet);
+    if (!alone) break;
+    if (!alone->unplaced.empty() || alone->sheet_count != 1) continue;
     for (std::size_t j = 0; j < on_sheet.size(); ++j)
-      k.packed.placements[on_sheet[j]].transform = alone.placements[j].transform;
+      k.packed.placements[on_sheet[j]].transform = alone->placements[j].transform;
     moved = true;
   }
   return moved;
@@ -1051,9 +1062,12 @@ void keep_corner_for_square(const unfold::Unfolding& u, const LayoutOptions& o, 
   if (without_square.empty() || u.num_faces() > kMostFacesToRelabel) return;
   const LayoutOptions third = corner_stages(o, kCornersStage);
   k = first;
-  k.packed = pack_items(
+  std::optional<PackResult> again_packed = pack_if_in_time(
       k.items, with_corner_kept(pack_options_in_use(third, packing_area(o), first.packed.sheet_count), o));
-  if (!k.packed.unplaced.empty() || k.packed.sheet_count > first.packed.sheet_count) return;
+  if (!again_packed || !again_packed->unplaced.empty() ||
+      again_packed->sheet_count > first.packed.sheet_count)
+    return;
+  k.packed = std::move(*again_packed);
   Draft d = drawn;
   LayoutResult again = scaled_like(r);
   if (emit_sheets(u, third, d, k, again).size() < without_square.size()) r = std::move(again);
