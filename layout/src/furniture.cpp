@@ -170,6 +170,25 @@ bool margin_holds_heading(double bottom_margin_mm, const FurnitureOptions& optio
   return bottom_margin_mm >= options.text_mm + 2;
 }
 
+// The parts line in the bottom margin from `at`, ending before `end_x`, a little smaller if need be; a
+// long one goes to the right end of the top margin, where that is deep enough and clear of the marks.
+void draw_parts_line_in_margins(Sheet& sheet, const std::string& parts, Vec2 at, double end_x,
+                                std::span<const Box2> keep_out) {
+  for (double cap : {kSmallText_mm, kLeastText_mm}) {
+    if (at.x + sheet_text_width_mm(parts, cap) >= end_x) continue;
+    add_text(sheet, parts, at, cap);
+    return;
+  }
+  const double top = sheet.printable_mm.min.y;
+  const Box2 line{
+      {sheet.printable_mm.max.x - sheet_text_width_mm(parts, kSmallText_mm), 0.5 * (top - kSmallText_mm)},
+      {sheet.printable_mm.max.x, 0.5 * (top + kSmallText_mm)}};
+  if (top < kSmallText_mm + 2 || line.min.x < sheet.printable_mm.min.x ||
+      std::any_of(keep_out.begin(), keep_out.end(), [&](const Box2& z) { return z.overlaps(line); }))
+    return;
+  add_text(sheet, parts, {line.min.x, line.max.y}, kSmallText_mm);
+}
+
 // Number, name and bar in the bottom margin when it is deep enough (the sheet had no room for the whole
 // block); false when it is not.
 bool draw_heading_in_margin(Sheet& sheet, const std::string& heading, const std::string& parts,
@@ -190,22 +209,7 @@ bool draw_heading_in_margin(Sheet& sheet, const std::string& heading, const std:
   constexpr double kBarName_mm = 14;
   const double name_x = bar_x - kBarName_mm;
   add_text(sheet, "50 mm", {name_x, base}, kSmallText_mm);
-  if (parts.empty()) return true;
-  // The parts line fits between the heading and the bar, a little smaller if need be; a long one goes
-  // to the top margin's right end.
-  for (double cap : {kSmallText_mm, kLeastText_mm}) {
-    if (parts_x + sheet_text_width_mm(parts, cap) >= name_x - 2) continue;
-    add_text(sheet, parts, {parts_x, base}, cap);
-    return true;
-  }
-  const double top = sheet.printable_mm.min.y;
-  const Box2 line{
-      {sheet.printable_mm.max.x - sheet_text_width_mm(parts, kSmallText_mm), 0.5 * (top - kSmallText_mm)},
-      {sheet.printable_mm.max.x, 0.5 * (top + kSmallText_mm)}};
-  if (top < kSmallText_mm + 2 || line.min.x < sheet.printable_mm.min.x ||
-      std::any_of(keep_out.begin(), keep_out.end(), [&](const Box2& z) { return z.overlaps(line); }))
-    return true;
-  add_text(sheet, parts, {line.min.x, line.max.y}, kSmallText_mm);
+  if (!parts.empty()) draw_parts_line_in_margins(sheet, parts, {parts_x, base}, name_x - 2, keep_out);
   return true;
 }
 

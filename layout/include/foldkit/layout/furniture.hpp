@@ -5,9 +5,9 @@
 // of line styles. All of it goes in one block in a free corner of the printable area when there is one;
 // on a fuller sheet the number, name and bar go in the bottom margin and the square and the legend take
 // smaller free spots along the edges (the first sheet's legend, failing that, one row in its top
-// margin). Always clear of every part, tab, text block and registration-mark
-// zone, in the Sheet role (cutters leave it alone). Layout keeps a corner free for the square where no
-// spot is left and that costs no sheet (least_furniture_block_mm).
+// margin). Always clear of every part, tab, text block and registration-mark zone, in the Sheet role
+// (cutters leave it alone). Layout keeps a corner free for the square where no spot is left and that
+// costs no sheet (least_furniture_block_mm).
 #include <span>
 #include <string>
 #include <vector>

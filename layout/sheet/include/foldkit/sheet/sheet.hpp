@@ -88,8 +88,10 @@ struct Fill {
 
 /// One sheet of paper with everything to print, draw, score and cut on it.
 struct Sheet {
-  Vec2 size_mm;       ///< width, height of the paper
-  Box2 printable_mm;  ///< area inside the margins; everything but registration marks lies inside it
+  Vec2 size_mm;  ///< width, height of the paper
+  /// Area inside the margins; everything lies inside it but registration marks and the sheet furniture
+  /// a full sheet puts in its margins (number, name, bar, parts line, legend row: PathRole::Sheet).
+  Box2 printable_mm;
   std::vector<Path> paths;
   std::vector<Text> texts;
   /// Where the renderer draws a small legend of its line styles (cut, mountain, valley, tab); empty
