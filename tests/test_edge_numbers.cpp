@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -147,6 +148,30 @@ TEST(EdgeNumbers, ANeedleFaceCrossedByAFoldStillGetsItsLabelAcrossItRatherThanOv
   EXPECT_NEAR(dot(l.dir, Vec2{0, 1}), 1, 1e-9) << "reads away from the base, into the face";
   for (Vec2 corner : l.box_mm)
     EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}
+
+TEST(EdgeNumbers, ALabelWithNoSpotAtTheFullClearanceKeepsTheTightOneBeforeCrossingAFold) {
+  // The needle above with a fold across it 0.18 mm above where "12" across the base ends (3.1 mm): too
+  // close for the 0.25 mm clearance, clear of the tight 0.12 mm one. The label stays off the fold, the
+  // line's ink (0.1 mm either side) not touching the text; asked for no tight spot, it crosses the fold.
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {3, 0}, {1.5, 30});
+  const std::array<Vec2, 2> fold{Vec2{0.1, 3.28}, Vec2{2.9, 3.28}};
+  const std::vector<std::vector<FoldLine>> folds{{FoldLine{PathRole::Valley, fold[0], fold[1], 7}}};
+  LabelOptions o;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_FALSE(l.crowded);
+  EXPECT_FALSE(l.over_fold);
+  EXPECT_FALSE(convex_overlap(l.box_mm, fold, -o.tight_clearance_mm)) << "the tight clearance is kept";
+  EXPECT_TRUE(convex_overlap(l.box_mm, fold, -o.clearance_mm)) << "no spot keeps the full clearance";
+  for (Vec2 corner : l.box_mm)
+    EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+
+  o.tight_clearance_mm = o.clearance_mm;
+  const auto without_tight = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(without_tight.size(), 1u);
+  EXPECT_TRUE(without_tight.front().over_fold);
 }
 
 TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {

@@ -194,9 +194,10 @@ std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::
 
 namespace {
 
-// How far a label is from clear, in the order placement gives in: clear of every line and label;
-// across a fold line; touching the outline too; nowhere clear (where it runs into the least).
-enum class Clearance { Clear, OverFold, OverOutline, Nowhere };
+// How far a label is from clear, in the order placement gives in: clear of every line and label; clear
+// of them by less (the tight clearance: the ink still keeps off the text); across a fold line; touching
+// the outline too; nowhere clear (where it runs into the least).
+enum class Clearance { Clear, Tight, OverFold, OverOutline, Nowhere };
 
 // What a label says, most informative first: the full text (with the mate's sheet) or the short one,
 // each with the step mark or without it.
@@ -249,7 +250,7 @@ class LabelPlacer {
                      [&](std::size_t a, std::size_t b) { return sides_[a].room_mm < sides_[b].room_mm; });
     for (std::size_t i : hardest_first)
       try_at_minimum(sides_[i], Clearance::Clear);
-    for (Clearance level : {Clearance::OverFold, Clearance::OverOutline})
+    for (Clearance level : {Clearance::Tight, Clearance::OverFold, Clearance::OverOutline})
       for (std::size_t i : hardest_first)
         if (!sides_[i].label) try_at_minimum(sides_[i], level);
     std::vector<std::size_t> crowded;
@@ -375,28 +376,32 @@ class LabelPlacer {
     return heights;
   }
 
-  // level Clear: clear of every line and label; OverFold: may cross fold lines; OverOutline: may touch
-  // the outline too, but never another label.
+  double clearance_at(Clearance level) const {
+    return level == Clearance::Tight ? o_.tight_clearance_mm : o_.clearance_mm;
+  }
+
+  // level Clear: clear of every line and label; Tight: the same by the tight clearance; OverFold: may
+  // cross fold lines; OverOutline: may touch the outline too, but never another label.
   bool clear_of_everything(int p, const Polygon& box, Clearance level) const {
-    const Box2 reach = grown(bounds_of(box), o_.clearance_mm);
+    const double clearance = clearance_at(level);
+    const Box2 reach = grown(bounds_of(box), clearance);
     const PieceObstacles& ob = obstacles_[p];
     if (level < Clearance::OverOutline) {
       const bool clear_of_lines = ob.line_grid.visit(reach, [&](int i) {
         const Segment& s = ob.lines[i];
         if (level >= Clearance::OverFold && s.fold) return true;
         const std::array<Vec2, 2> seg{s.a, s.b};
-        return !convex_overlap(box, seg, -o_.clearance_mm);
+        return !convex_overlap(box, seg, -clearance);
       });
       if (!clear_of_lines) return false;
     }
-    return clear_of_labels(p, box);
+    return clear_of_labels(p, box, clearance);
   }
-  bool clear_of_labels(int p, const Polygon& box) const {
-    const Box2 reach = grown(bounds_of(box), o_.clearance_mm);
+  bool clear_of_labels(int p, const Polygon& box, double clearance) const {
+    const Box2 reach = grown(bounds_of(box), clearance);
     const PieceObstacles& ob = obstacles_[p];
-    return ob.label_grid.visit(reach, [&](int k) {
-      return !ob.label_active[k] || !convex_overlap(box, ob.labels[k], -o_.clearance_mm);
-    });
+    return ob.label_grid.visit(
+        reach, [&](int k) { return !ob.label_active[k] || !convex_overlap(box, ob.labels[k], -clearance); });
   }
   bool inside_piece(int p, Vec2 point) const {
     const Box2 at{point, point};
@@ -425,7 +430,7 @@ class LabelPlacer {
 
   // On the tab: read from the outside, foot on the fold. The tab may cover only part of the edge, and
   // its slanted ends leave most room at its middle: centred on its base first.
-  std::optional<Label> on_tab(const SideTask& side, double h, const Form& f) const {
+  std::optional<Label> on_tab(const SideTask& side, double h, const Form& f, Clearance level) const {
     const Tab& tab = *side.tab;
     if (h > tab.width_mm - o_.gap_mm - o_.clearance_mm) return std::nullopt;
     const Vec2 dir = normalized(side.edge->a - side.edge->b);
@@ -438,7 +443,7 @@ class LabelPlacer {
       bool inside = true;
       for (Vec2 c : label.box_mm)
         inside = inside && inside_convex(tab.quad_mm, c, o_.clearance_mm * 0.5);
-      if (inside && clear_of_labels(side.piece, label.box_mm)) return label;
+      if (inside && clear_of_labels(side.piece, label.box_mm, clearance_at(level))) return label;
     }
     return std::nullopt;
   }
@@ -487,7 +492,7 @@ class LabelPlacer {
   // A label that has its tab keeps it: it grows only there.
   std::optional<Label> find(const SideTask& side, double h, const Form& f, Clearance level) const {
     if (side.tab)
-      if (auto label = on_tab(side, h, f)) return label;
+      if (auto label = on_tab(side, h, f, level)) return label;
     if (side.label && side.label->on_tab) return std::nullopt;
     return on_face(side, h, f, level);
   }
@@ -530,9 +535,10 @@ class LabelPlacer {
   }
 
   // What a label with no clear spot runs into, worst first: another label (the two become unreadable),
-  // the outline (cutting takes part of the text away), fold lines.
+  // the outline (cutting takes part of the text away), fold lines; each counted where it comes closer
+  // than the tight clearance. Last, what comes within the full clearance: nearer is harder to read.
   struct Crowding {
-    int labels = 0, outlines = 0, folds = 0;
+    int labels = 0, outlines = 0, folds = 0, near = 0;
     auto operator<=>(const Crowding&) const = default;
   };
   Crowding crowding(int p, const Polygon& box) const {
@@ -542,11 +548,18 @@ class LabelPlacer {
     ob.line_grid.visit(reach, [&](int i) {
       const Segment& s = ob.lines[i];
       const std::array<Vec2, 2> seg{s.a, s.b};
-      if (convex_overlap(box, seg, -o_.clearance_mm)) ++(s.fold ? c.folds : c.outlines);
+      if (convex_overlap(box, seg, -o_.tight_clearance_mm))
+        ++(s.fold ? c.folds : c.outlines);
+      else
+        c.near += convex_overlap(box, seg, -o_.clearance_mm);
       return true;
     });
     ob.label_grid.visit(reach, [&](int k) {
-      c.labels += ob.label_active[k] && convex_overlap(box, ob.labels[k], -o_.clearance_mm);
+      if (!ob.label_active[k]) return true;
+      if (convex_overlap(box, ob.labels[k], -o_.tight_clearance_mm))
+        ++c.labels;
+      else
+        c.near += convex_overlap(box, ob.labels[k], -o_.clearance_mm);
       return true;
     });
     return c;

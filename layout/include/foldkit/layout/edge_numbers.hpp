@@ -28,6 +28,9 @@ struct LabelOptions {
   double char_width = 0.70;
   double gap_mm = 0.3;         ///< between the edge and the label's foot
   double clearance_mm = 0.25;  ///< least distance from other lines and labels
+  /// The least distance where clearance_mm leaves no spot, before a label crosses a line: half the
+  /// 0.2 mm ink of a line and a little more, so that no line touches the text.
+  double tight_clearance_mm = 0.12;
   /// The assembly-step hint after the number: its cap height and the gap before it, as shares of the
   /// number's cap height.
   double hint_height_share = 0.75;
