@@ -250,10 +250,12 @@ class CliSignal : public ::testing::TestWithParam<SignalCase> {};
 TEST_P(CliSignal, MakeRemovesItsTemporaryFilesAndExitsWithTheSignalsCode) {
   const fs::path dir = foldkit::test::temp_dir("outputs-signal");
   fs::create_directory(dir / "out");
-  // PNG at 600 dpi of several sheets: the temporaries exist for seconds while the sheets render.
+  // PNG at 600 dpi of several sheets: the temporaries exist for seconds while the sheets render. On A5
+  // there are more of them than on A4 (2), so a test process descheduled on a loaded machine between
+  // seeing the first temporary and sending the signal still finds the command writing.
   const pid_t pid =
       spawn_foldkit(dir, {"make", foldkit::test::example_mesh("spot_350.obj").string(), "--size", "160mm",
-                          "--dpi", "600", "-o", (dir / "out" / "m.png").string(), "-q"});
+                          "--paper", "A5", "--dpi", "600", "-o", (dir / "out" / "m.png").string(), "-q"});
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(wait_for_temporary(dir / "out", pid)) << slurp(dir / "stderr.txt");
   ::kill(pid, GetParam().signal);
