@@ -174,6 +174,44 @@ TEST(EdgeNumbers, ALabelWithNoSpotAtTheFullClearanceKeepsTheTightOneBeforeCrossi
   EXPECT_TRUE(without_tight.front().over_fold);
 }
 
+TEST(EdgeNumbers, ALabelWhoseOnlySpotANeighbourTookGetsItWhenTheNeighbourCanMove) {
+  // A 10 mm square of two faces, glued along its right edge (seam 0, labelled first) and its bottom edge
+  // (seam 1), with part letters covering all but the bottom-right corner and the right edge's two ends.
+  // Seam 0's label takes the lower end of its edge first, next to the one spot seam 1's label has
+  // (beside the bottom edge, right of the letters); seam 0's label moves to the upper end and both are
+  // clear. Left where it was, seam 1's label would be crowded against it.
+  ScaledPiece square;
+  square.index = 0;
+  square.faces = {0, 1};
+  const Vec2 a{0, 0}, b{10, 0}, c{10, 10}, d{0, 10};
+  square.triangles_mm = {Triangle2{a, b, c}, Triangle2{a, c, d}};
+  square.outline_mm = {{OutlineEdge{1, 0, 0, a, b}, OutlineEdge{0, 0, 1, b, c}, OutlineEdge{2, 1, 1, c, d},
+                        OutlineEdge{3, 1, 2, d, a}}};
+  square.area_mm2 = 100;
+  const std::vector<ScaledPiece> pieces{square};
+  std::vector<Seam> seams(2);
+  seams[0].edge = 0;
+  seams[0].sides = {SeamSide{0, 0, 1}, SeamSide{}};
+  seams[1].edge = 1;
+  seams[1].sides = {SeamSide{0, 0, 0}, SeamSide{}};
+  auto rect = [](double x0, double y0, double x1, double y1) {
+    return Polygon{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  };
+  const std::vector<std::vector<Polygon>> taken{
+      {rect(0, 2.7, 7, 10), rect(0, 0, 7.3, 2.7), rect(7, 4.2, 10, 6.5)}};
+  const LabelOptions o;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{1, 2}, TabPlan{}, {}, {}, o, {}, taken);
+  ASSERT_EQ(labels.size(), 2u);
+  for (const Label& l : labels) {
+    EXPECT_FALSE(l.crowded) << l.text;
+    EXPECT_FALSE(l.over_fold) << l.text;
+    for (const Polygon& area : taken[0])
+      EXPECT_FALSE(convex_overlap(l.box_mm, area, -o.tight_clearance_mm)) << l.text;
+  }
+  EXPECT_FALSE(convex_overlap(labels[0].box_mm, labels[1].box_mm, -o.tight_clearance_mm));
+  EXPECT_GT(labels[0].at_mm.y, 6.5) << "seam 0's label is at the upper end of its edge";
+}
+
 TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
   // A 7 mm triangle with two part letters standing side by side over its base: "12" at 2 mm (2.8 mm
   // wide) covers one of them wherever it goes beside the base, and both in the base's middle.

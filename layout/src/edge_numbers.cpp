@@ -28,6 +28,10 @@ constexpr double kHighestLiftSmall = 1.5, kHighestLift = 0.9;
 constexpr double kMiddleLift = 0.4;
 // Rounds over the labels that find no clear spot, each moving to where it runs into the least.
 constexpr int kCrowdedRounds = 2;
+// A label with no clear spot may take one where at most this many labels stand, each moving elsewhere,
+// trying this many such spots at most.
+constexpr std::size_t kMostLabelsMoved = 2;
+constexpr std::size_t kMostSpotsFreed = 6;
 
 Box2 piece_region(const ScaledPiece& piece) {
   Box2 b;
@@ -250,7 +254,11 @@ class LabelPlacer {
                      [&](std::size_t a, std::size_t b) { return sides_[a].room_mm < sides_[b].room_mm; });
     for (std::size_t i : hardest_first)
       try_at_minimum(sides_[i], Clearance::Clear);
-    for (Clearance level : {Clearance::Tight, Clearance::OverFold, Clearance::OverOutline})
+    for (std::size_t i : hardest_first)
+      if (!sides_[i].label) try_at_minimum(sides_[i], Clearance::Tight);
+    for (std::size_t i : hardest_first)
+      if (!sides_[i].label) place_by_moving_others(sides_[i]);
+    for (Clearance level : {Clearance::OverFold, Clearance::OverOutline})
       for (std::size_t i : hardest_first)
         if (!sides_[i].label) try_at_minimum(sides_[i], level);
     std::vector<std::size_t> crowded;
@@ -281,6 +289,7 @@ class LabelPlacer {
     std::vector<Segment> lines;
     std::vector<Polygon> labels;
     std::vector<bool> label_active;  // moved labels stay in the grid, switched off
+    std::vector<int> side_of_label;  // the SideTask (index) a label belongs to, -1 for taken areas
     BoxGrid line_grid, label_grid, triangle_grid;
     explicit PieceObstacles(const Box2& region)
         : line_grid(region, kGridCell_mm),
@@ -497,11 +506,12 @@ class LabelPlacer {
     return on_face(side, h, f, level);
   }
 
-  void add_label_obstacle(int p, const Polygon& box) {
+  void add_label_obstacle(int p, const Polygon& box, int side = -1) {
     PieceObstacles& ob = obstacles_[p];
     ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(box));
     ob.labels.push_back(box);
     ob.label_active.push_back(true);
+    ob.side_of_label.push_back(side);
   }
 
   void commit(SideTask& side, Label label, Clearance level, std::size_t form) {
@@ -511,27 +521,116 @@ class LabelPlacer {
     side.clearance = label.on_tab ? Clearance::Clear : level;
     side.form = form;
     side.slot = static_cast<int>(obstacles_[side.piece].labels.size());
-    add_label_obstacle(side.piece, label.box_mm);
+    add_label_obstacle(side.piece, label.box_mm, static_cast<int>(&side - sides_.data()));
     side.label = std::move(label);
   }
 
+  struct Spot {
+    Label label;
+    std::size_t form = kForms.size() - 1;
+  };
   // The short text first, everywhere: the mate's sheet, like a larger size, comes where room is left
   // over (grow), and the sheets list their parts. The step mark too, except on the seam's first side:
   // one side at least shows it if it fits there at all.
-  void try_at_minimum(SideTask& side, Clearance level) {
+  std::optional<Spot> spot_at_minimum(const SideTask& side, Clearance level) const {
     const bool step_first = level == Clearance::Clear && side.step_side && !hint_of(side).empty();
     const std::vector<std::size_t> forms =
         step_first ? std::vector<std::size_t>{2, 3} : std::vector<std::size_t>{3};
     for (std::size_t i = 0; i < forms.size(); ++i) {
       if (tried_before(side, forms, i)) continue;
-      if (auto label = find(side, o_.min_mm, kForms[forms[i]], level)) {
-        commit(side, std::move(*label), level, forms[i]);
-        return;
-      }
+      if (auto label = find(side, o_.min_mm, kForms[forms[i]], level))
+        return Spot{std::move(*label), forms[i]};
     }
-    if (level == Clearance::OverOutline) return;
-    if (auto label = across_face(side, o_.min_mm, kForms[3], level))
-      commit(side, std::move(*label), level, 3);
+    if (level == Clearance::OverOutline) return std::nullopt;
+    if (auto label = across_face(side, o_.min_mm, kForms[3], level)) return Spot{std::move(*label), 3};
+    return std::nullopt;
+  }
+  void try_at_minimum(SideTask& side, Clearance level) {
+    if (auto spot = spot_at_minimum(side, level)) commit(side, std::move(spot->label), level, spot->form);
+  }
+
+  // The spots beside the edge (along it, then across it) that keep the tight clearance from every line
+  // but not from some labels, with those labels' sides, fewest first; none where a part letter is in
+  // the way or more than kMostLabelsMoved labels are.
+  struct BlockedSpot {
+    Label label;
+    std::vector<int> blockers;
+  };
+  std::vector<BlockedSpot> spots_blocked_by_labels(const SideTask& side) const {
+    std::vector<BlockedSpot> spots;
+    for_each_spot_at_minimum(side, [&](Label label, Vec2 centre) {
+      if (!inside_piece(side.piece, centre)) return;
+      if (!clear_of_lines(side.piece, label.box_mm, o_.tight_clearance_mm)) return;
+      if (auto blockers = labels_in_the_way(side.piece, label.box_mm))
+        spots.push_back({std::move(label), std::move(*blockers)});
+    });
+    std::stable_sort(spots.begin(), spots.end(), [](const BlockedSpot& a, const BlockedSpot& b) {
+      return a.blockers.size() < b.blockers.size();
+    });
+    if (spots.size() > kMostSpotsFreed) spots.resize(kMostSpotsFreed);
+    return spots;
+  }
+  bool clear_of_lines(int p, const Polygon& box, double clearance) const {
+    const PieceObstacles& ob = obstacles_[p];
+    return ob.line_grid.visit(grown(bounds_of(box), clearance), [&](int i) {
+      const std::array<Vec2, 2> seg{ob.lines[i].a, ob.lines[i].b};
+      return !convex_overlap(box, seg, -clearance);
+    });
+  }
+  // The sides of the labels within the tight clearance of `box`, or nullopt where one of them is a part
+  // letter or there are more than kMostLabelsMoved.
+  std::optional<std::vector<int>> labels_in_the_way(int p, const Polygon& box) const {
+    const PieceObstacles& ob = obstacles_[p];
+    std::vector<int> sides;
+    const bool movable = ob.label_grid.visit(grown(bounds_of(box), o_.tight_clearance_mm), [&](int k) {
+      if (!ob.label_active[k] || !convex_overlap(box, ob.labels[k], -o_.tight_clearance_mm)) return true;
+      sides.push_back(ob.side_of_label[k]);
+      return ob.side_of_label[k] >= 0 && sides.size() <= kMostLabelsMoved;
+    });
+    if (!movable || sides.empty()) return std::nullopt;
+    return sides;
+  }
+
+  // A label with no spot at the tight clearance takes one where only other labels stand in its way,
+  // when each of them finds another spot at least that clear: a label beside a small face has one or
+  // two spots, its neighbours on larger faces have many. Tried before any label crosses a line.
+  void place_by_moving_others(SideTask& side) {
+    for (BlockedSpot& spot : spots_blocked_by_labels(side)) {
+      std::vector<SideTask*> touched{&side};
+      for (int b : spot.blockers)
+        touched.push_back(&sides_[b]);
+      std::vector<SideTask> saved;
+      for (SideTask* t : touched)
+        saved.push_back(*t);
+      for (int b : spot.blockers)
+        obstacles_[sides_[b].piece].label_active[sides_[b].slot] = false;
+      const Clearance own = clear_of_everything(side.piece, spot.label.box_mm, Clearance::Clear)
+                                ? Clearance::Clear
+                                : Clearance::Tight;
+      commit(side, std::move(spot.label), own, kForms.size() - 1);
+      bool moved = true;
+      for (int b : spot.blockers) {
+        for (Clearance level : {Clearance::Clear, Clearance::Tight}) {
+          if (auto other = spot_at_minimum(sides_[b], level)) {
+            commit(sides_[b], std::move(other->label), level, other->form);
+            break;
+          }
+        }
+        // Still in its old slot (switched off) when it found no other spot.
+        moved = moved && obstacles_[sides_[b].piece].label_active[sides_[b].slot];
+        if (!moved) break;
+      }
+      if (moved) return;
+      undo(touched, saved);
+    }
+  }
+  void undo(std::span<SideTask* const> touched, std::vector<SideTask>& saved) {
+    for (SideTask* t : touched)
+      if (t->slot >= 0) obstacles_[t->piece].label_active[t->slot] = false;
+    for (std::size_t i = 0; i < touched.size(); ++i) {
+      *touched[i] = std::move(saved[i]);
+      if (touched[i]->slot >= 0) obstacles_[touched[i]->piece].label_active[touched[i]->slot] = true;
+    }
   }
 
   // What a label with no clear spot runs into, worst first: another label (the two become unreadable),
@@ -569,33 +668,39 @@ class LabelPlacer {
   // into the least: over fold lines or the outline rather than over another label, so that each stays
   // readable. Among equals the spot nearest the edge's middle (the first tried).
   void place_least_crowded(SideTask& side) {
-    static constexpr std::array<double, 9> kAlong{0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0, 1};
-    const OutlineEdge& e = *side.edge;
-    const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
-    const Form brief{false, false};
-    const double h = o_.min_mm, w = full_width(side, h, brief);
     if (side.slot >= 0) obstacles_[side.piece].label_active[side.slot] = false;
     std::optional<Label> best;
     Crowding least;
-    auto consider = [&](Vec2 at, Vec2 along, Vec2 centre) {
+    for_each_spot_at_minimum(side, [&](Label label, Vec2 centre) {
       if (best && !inside_piece(side.piece, centre)) return;
-      Label label = make_label(side, at, along, h, brief, false);
       const Crowding c = crowding(side.piece, label.box_mm);
       if (!best || c < least) {
         least = c;
         best = std::move(label);
       }
-    };
-    for (double lift : {o_.gap_mm, o_.gap_mm + kMiddleLift * h, o_.gap_mm + kHighestLiftSmall * h})
+    });
+    commit(side, std::move(*best), Clearance::Nowhere, kForms.size() - 1);
+  }
+
+  // The short label at the legible minimum at a coarse set of spots beside its edge, whatever is there:
+  // along the edge at four lifts, the middle first, then across it. `consider(label, centre)`.
+  template <class Consider>
+  void for_each_spot_at_minimum(const SideTask& side, Consider&& consider) const {
+    static constexpr std::array<double, 9> kAlong{0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0, 1};
+    const OutlineEdge& e = *side.edge;
+    const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
+    const Form& brief = kForms.back();
+    const double h = o_.min_mm, w = full_width(side, h, brief);
+    for (double lift : {o_.gap_mm, o_.gap_mm + kMiddleLift * h, o_.gap_mm + kHighestLift * h,
+                        o_.gap_mm + kHighestLiftSmall * h})
       for (double t : kAlong) {
         const Vec2 at = e.a + dir * (t * side.length_mm - 0.5 * w) + up * lift;
-        consider(at, dir, at + dir * (0.5 * w) + up * (0.5 * h));
+        consider(make_label(side, at, dir, h, brief, false), at + dir * (0.5 * w) + up * (0.5 * h));
       }
     for (double t : kAlong) {
       const Vec2 at = e.a + dir * (t * side.length_mm + 0.5 * h) + up * o_.gap_mm;
-      consider(at, up, at + up * (0.5 * w) - dir * (0.5 * h));
+      consider(make_label(side, at, up, h, brief, false), at + up * (0.5 * w) - dir * (0.5 * h));
     }
-    commit(side, std::move(*best), Clearance::Nowhere, kForms.size() - 1);
   }
 
   // A more informative form (the full text, the step mark) where the room allows, then a larger size;
