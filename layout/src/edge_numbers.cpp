@@ -228,8 +228,9 @@ struct SideTask {
 
 // Places the labels in three rounds, so that no label takes the room another needs to be legible:
 // every label at the legible minimum clear of everything, the sides with the least room first; then the
-// ones left over across a fold line or, failing that, touching the outline; then each grows (its full
-// text, its step mark, a larger size) where the room allows.
+// ones left over at the tight clearance, or by moving labels in their way, or across a fold line, or,
+// failing all that, touching the outline; then each grows (its full text, its step mark, a larger size)
+// where the room allows.
 class LabelPlacer {
  public:
   LabelPlacer(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabPlan& tabs,
