@@ -394,18 +394,19 @@ class LabelPlacer {
   // cross fold lines; OverOutline: may touch the outline too, but never another label.
   bool clear_of_everything(int p, const Polygon& box, Clearance level) const {
     const double clearance = clearance_at(level);
-    const Box2 reach = grown(bounds_of(box), clearance);
-    const PieceObstacles& ob = obstacles_[p];
-    if (level < Clearance::OverOutline) {
-      const bool clear_of_lines = ob.line_grid.visit(reach, [&](int i) {
-        const Segment& s = ob.lines[i];
-        if (level >= Clearance::OverFold && s.fold) return true;
-        const std::array<Vec2, 2> seg{s.a, s.b};
-        return !convex_overlap(box, seg, -clearance);
-      });
-      if (!clear_of_lines) return false;
-    }
+    if (level < Clearance::OverOutline && !clear_of_lines(p, box, clearance, level >= Clearance::OverFold))
+      return false;
     return clear_of_labels(p, box, clearance);
+  }
+  // Clear of the outline and, unless `over_folds`, of the fold lines.
+  bool clear_of_lines(int p, const Polygon& box, double clearance, bool over_folds = false) const {
+    const PieceObstacles& ob = obstacles_[p];
+    return ob.line_grid.visit(grown(bounds_of(box), clearance), [&](int i) {
+      const Segment& s = ob.lines[i];
+      if (over_folds && s.fold) return true;
+      const std::array<Vec2, 2> seg{s.a, s.b};
+      return !convex_overlap(box, seg, -clearance);
+    });
   }
   bool clear_of_labels(int p, const Polygon& box, double clearance) const {
     const Box2 reach = grown(bounds_of(box), clearance);
@@ -570,13 +571,6 @@ class LabelPlacer {
     });
     if (spots.size() > kMostSpotsFreed) spots.resize(kMostSpotsFreed);
     return spots;
-  }
-  bool clear_of_lines(int p, const Polygon& box, double clearance) const {
-    const PieceObstacles& ob = obstacles_[p];
-    return ob.line_grid.visit(grown(bounds_of(box), clearance), [&](int i) {
-      const std::array<Vec2, 2> seg{ob.lines[i].a, ob.lines[i].b};
-      return !convex_overlap(box, seg, -clearance);
-    });
   }
   // The sides of the labels within the tight clearance of `box`, or nullopt where one of them is a part
   // letter or there are more than kMostLabelsMoved.

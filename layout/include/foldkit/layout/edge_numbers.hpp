@@ -100,8 +100,8 @@ int first_labelled_side(const TabPlan& tabs, std::size_t seam);
 /// `texts` (empty) a side prints number_text of its number. Every label first gets a spot at the
 /// legible minimum (the sides with the least room first; one that finds none may move up to two labels
 /// in its way to other clear spots), then the full text, the hint and a larger size where the room
-/// allows. Obstacles are looked up through grids, so the time grows with the number
-/// of seams, not its square. `taken` (per piece, may be empty) are convex areas already used (part
+/// allows. Obstacles are looked up through grids, so the time grows with the number of seams, not its
+/// square. `taken` (per piece, may be empty) are convex areas already used (part
 /// letters) that labels keep clear of like other labels. `only_pieces` (empty: all) places the labels
 /// of those pieces only; without hints they come out as the same pieces' labels of a call for all (a
 /// label keeps clear of its own piece only), so a caller may place again only what changed. With hints
