@@ -42,11 +42,13 @@ TEST(ChooseParts, SmallerPartsAreKeptWhenTheySaveASheet) {
 }
 
 TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWithoutATabIsKept) {
-  // Bob at 150 mm: partitions into as many parts on as many sheets differ in where their part
-  // boundaries run, some through slits (whose sides then both have room for a tab).
+  // Bob at 140 mm: partitions into as many parts on as many sheets differ in where their part
+  // boundaries run, some through slits (whose sides then both have room for a tab). Which sizes give
+  // such ties is packing luck (150 mm did before lengths were measured without std::hypot): the test
+  // insists on one.
   const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
-  o.size_mm = 150;
+  o.size_mm = 140;
   const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
   ASSERT_TRUE(chosen.layout);
   const long sheets = sheets_with_pieces(*chosen.layout);
