@@ -43,7 +43,7 @@ std::vector<Polygon> from_clipper(const ClipperLib::Paths& paths) {
 }
 
 // Whether c / |e| < inset (|e| > 0): a point's signed distance to an edge's line below the inset. Label
-// placement asks this many times per label; |e| (a hypot) is computed only where the answer depends on
+// placement asks this many times per label; |e| (a square root) is computed only where the answer depends on
 // it. The sign of the quotient is that of c, and its size against the inset is decided by squares with
 // a margin far above the rounding of either form; the exact form decides near the margin and for values
 // out of the safe range, so the answer is the same to the last bit.

@@ -37,7 +37,7 @@ namespace detail {
 
 /// Whether the corners `q` lie outside edge p0->p1 or within eps inside it: max over v of
 /// cross(e, v - p0) / |e| <= eps, for |e| > 0. The test is hot in the unfolding's and the tabs' overlap
-/// checks, so |e| (a hypot) is computed only where the answer depends on it. Division by |e| > 0 is
+/// checks, so |e| (a square root) is computed only where the answer depends on it. Division by |e| > 0 is
 /// monotone, so the largest quotient is the largest cross product divided once; its sign is that
 /// product's, and its size against eps is decided by squares with a margin far above the rounding of
 /// either form. Near the margin, and for values out of the safe range, the exact form decides: the
