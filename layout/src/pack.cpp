@@ -144,17 +144,20 @@ class SheetGrid {
     if (y < 0 || y >= ny_) return;
     x0 = std::max(x0, 0);
     x1 = std::min(x1, nx_ - 1);
+    if (x0 > x1) return;
+    std::uint8_t* taken = &taken_[std::size_t(y) * nx_];
+    int* last = &last_taken_[std::size_t(y) * nx_];
     for (int x = x0; x <= x1; ++x) {
-      auto& cell = taken_[std::size_t(y) * nx_ + x];
-      if (!cell) --free_;
-      cell = 1;
+      free_ -= !taken[x];
+      taken[x] = 1;
+      last[x] = x;
     }
-    int last = -1, widest = 0;
-    for (int x = 0; x < nx_; ++x) {
-      if (taken_[std::size_t(y) * nx_ + x]) last = x;
-      last_taken_[std::size_t(y) * nx_ + x] = last;
-      widest = std::max(widest, x - last);
-    }
+    // Beyond the run, the last taken cell is x1 until a cell taken before.
+    for (int x = x1 + 1; x < nx_ && last[x] < x1; ++x)
+      last[x] = x1;
+    int widest = 0;
+    for (int x = 0; x < nx_; ++x)
+      widest = std::max(widest, x - last[x]);
     widest_free_[y] = widest;
   }
 
@@ -163,8 +166,11 @@ class SheetGrid {
   // `hot` is the raster row that failed last, and becomes the one that fails: scanning down a row at a
   // time, the row above it lands on the same sheet row next, so the check starts there.
   bool rows_may_fit(const Raster& r, int y, int& hot) const {
+    // The row after `hot` first, wrapping round: counting without a division, which cost more than
+    // the test it indexes.
+    int j = hot;
     for (int step = 0; step < r.height; ++step) {
-      const int j = (hot + 1 + step) % r.height;
+      if (++j == r.height) j = 0;
       if (widest_free_[y + j] < r.widest_run[j]) {
         hot = j;
         return false;
@@ -179,8 +185,8 @@ class SheetGrid {
     int hot_row = 0;  // the row that collided last is the likeliest to collide again
     while (x + r.width <= nx_) {
       bool collided = false;
-      for (int step = 0; step < r.height && !collided; ++step) {
-        const int j = (hot_row + step) % r.height;
+      int j = hot_row;
+      for (int step = 0; step < r.height && !collided; ++step, j = j + 1 == r.height ? 0 : j + 1) {
         const int* last = &last_taken_[std::size_t(y + j) * nx_];
         for (auto [i0, i1] : r.runs[j]) {
           const int hit = last[x + i1];
