@@ -375,6 +375,39 @@ void close_slits_across_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
     best = std::move(c);
 }
 
+// Parts that share a sheet, joined back along seams between them (unfold::join_parts): joined they are
+// fewer seams to match across parts. Joined up to the whole room, they often need another sheet; up to
+// a share of it, they still slip into the gaps. Each share is judged by the estimate, then by the full
+// layout, and the first that takes no more sheets is kept.
+void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, PartChooser& chooser,
+                           Candidate& best) {
+  constexpr double kJoinFractions[] = {1.0, 0.6, 0.4};
+  if (!best.layout || best.parts.unfolding.piece_count < 2) return;
+  const std::vector<layout::PiecePlacement> placed = best.layout->placements;
+  const auto same_sheet = [&](int a, int b) { return placed[a].sheet == placed[b].sheet; };
+  unfold::PartOptions po = chooser.part_options();
+  const int before = best.parts.unfolding.piece_count;
+  int last_tried = before;
+  for (double fraction : kJoinFractions) {
+    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
+    po.room_fraction = fraction;
+    Candidate c;
+    c.parts = best.parts;
+    c.parts.unfolding = unfold::join_parts(mesh, best.parts.unfolding, po, same_sheet);
+    // A smaller share that joins as many as the larger one did joined the same: nothing new to judge.
+    const int parts = c.parts.unfolding.piece_count;
+    if (parts >= before || parts == last_tried) continue;
+    last_tried = parts;
+    c.hull_area = hull_area(c.parts.unfolding);
+    chooser.estimate(c);
+    if (c.sheets > best.sheets) continue;
+    chooser.lay_out(c);
+    if (c.sheets > best.sheets) continue;
+    best = std::move(c);
+    return;
+  }
+}
+
 }  // namespace
 
 unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::UnfoldOptions& unfolded) {
@@ -386,7 +419,7 @@ unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::Unfo
 }
 
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o,
-                         const unfold::PartOptions& parts) {
+                         const unfold::PartOptions& parts, const ChooseOptions& choose) {
   if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return {u, 0, 0, std::nullopt};
   constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
   const bool large = mesh.num_faces() > kManyFaces;
@@ -414,6 +447,7 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u, c
     resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
     fewer_seams_without_tab(chooser, candidates, best);
     if (part_options.move_seams) close_slits_across_parts(mesh, o, chooser, best);
+    if (choose.join_on_a_sheet) join_parts_on_a_sheet(mesh, o, chooser, best);
   }
   const int untouched = u.piece_count - best.parts.split_pieces;
   return {std::move(best.parts.unfolding), best.parts.split_pieces,

@@ -23,12 +23,20 @@ struct ChosenParts {
   std::optional<layout::LayoutResult> layout;
 };
 
+/// What the choice may do beyond picking a partition.
+struct ChooseOptions {
+  /// Parts that share a sheet are joined back along seams between them where that costs no sheet:
+  /// fewer parts, fewer seams to match across parts. Off: the partitions as split.
+  bool join_on_a_sheet = true;
+};
+
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or
 /// when every piece fits; otherwise the best of the candidate partitions. `parts` says what every split
 /// keeps to (its seam moves, forced cuts and folds, cuts: part_options_of); the room, scale and growth
 /// are set here. Throws LayoutError.
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding,
-                         const layout::LayoutOptions& options, const unfold::PartOptions& parts = {});
+                         const layout::LayoutOptions& options, const unfold::PartOptions& parts = {},
+                         const ChooseOptions& choose = {});
 
 /// What a split into parts keeps from the options `mesh` was unfolded with: the forced cuts and folds
 /// (--cut/--keep), the cuts' label grading, whether seams move.

@@ -49,7 +49,10 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
   const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
   o.size_mm = 140;
-  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  // The partitions as split: joined parts on a sheet would tie with none of them.
+  cli::ChooseOptions as_split;
+  as_split.join_on_a_sheet = false;
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split);
   ASSERT_TRUE(chosen.layout);
   const long sheets = sheets_with_pieces(*chosen.layout);
   int ties = 0;
@@ -67,6 +70,25 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
           << "parts grown to " << fraction << " of the room";
     }
   EXPECT_GT(ties, 1) << "several partitions tie on sheets and parts";
+}
+
+TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
+  const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 250;
+  cli::ChooseOptions as_split;
+  as_split.join_on_a_sheet = false;
+  const cli::ChosenParts split = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split);
+  const cli::ChosenParts joined = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  ASSERT_TRUE(split.layout && joined.layout);
+  EXPECT_EQ(sheets_with_pieces(*joined.layout), sheets_with_pieces(*split.layout));
+  EXPECT_LT(joined.unfolding.piece_count, split.unfolding.piece_count);
+  EXPECT_EQ(joined.layout->placements.size(), static_cast<std::size_t>(joined.unfolding.piece_count));
+  EXPECT_EQ(unfold::check_unfolding(ex.mesh, joined.unfolding), std::vector<std::string>{});
+  for (std::size_t e = 0; e < joined.unfolding.edges.size(); ++e)
+    if (joined.unfolding.edges[e].cut) {
+      EXPECT_TRUE(split.unfolding.edges[e].cut) << "edge " << e << " was cut by a join";
+    }
 }
 
 TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {

@@ -253,3 +253,35 @@ TEST(Parts, PartsGrownIntoATileOfTheSheetFitTheTileAndPiecesThatFitTheSheetStayW
   EXPECT_EQ(kept.split_pieces, 0);
   EXPECT_EQ(kept.unfolding.piece_count, small.unfolding.piece_count);
 }
+
+TEST(Parts, PartsAllowedToJoinAreJoinedIntoFewerPartsThatFitAddingNoCutAndNoSlit) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  const PartOptions small = room_at(ex.unfolding, 150, 0.35, PartGrowth::Round);
+  const Unfolding parts = split_into_parts(ex.mesh, ex.unfolding, small).unfolding;
+  ASSERT_GT(parts.piece_count, 6);
+  // Two groups, as if parts lay on two sheets: even and odd part numbers.
+  const auto group = [](int part) { return part % 2; };
+  const PartOptions sheet = room_at(ex.unfolding, 150);
+  const Unfolding joined =
+      join_parts(ex.mesh, parts, sheet, [&](int a, int b) { return group(a) == group(b); });
+  EXPECT_EQ(check_unfolding(ex.mesh, joined), std::vector<std::string>{});
+  EXPECT_LT(joined.piece_count, parts.piece_count);
+  expect_parts_fit(joined, sheet);
+  EXPECT_LE(slits_of(ex.mesh, joined), slits_of(ex.mesh, parts));
+  for (int e = 0; e < ex.mesh.num_edges(); ++e)
+    if (joined.edges[e].cut) {
+      EXPECT_TRUE(parts.edges[e].cut) << "edge " << e << " was cut by a join";
+    }
+  // Each joined part holds parts of one group only.
+  for (const std::vector<int>& faces : joined.piece_faces())
+    for (int f : faces)
+      EXPECT_EQ(group(parts.piece_of_face[f]), group(parts.piece_of_face[faces.front()])) << "face " << f;
+  // Nothing may join, or every seam is forced: the parts stay as they were.
+  EXPECT_EQ(join_parts(ex.mesh, parts, sheet, [](int, int) { return false; }).piece_count, parts.piece_count);
+  PartOptions forced = sheet;
+  forced.constraints.rule.assign(ex.mesh.num_edges(), EdgeRule::Free);
+  for (int e = 0; e < ex.mesh.num_edges(); ++e)
+    if (parts.edges[e].cut && !parts.edges[e].boundary())
+      forced.constraints.rule[EdgeId(e)] = EdgeRule::MustCut;
+  EXPECT_EQ(join_parts(ex.mesh, parts, forced, [](int, int) { return true; }).piece_count, parts.piece_count);
+}

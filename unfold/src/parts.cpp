@@ -440,6 +440,106 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   return result;
 }
 
+namespace {
+
+// join_parts (parts.hpp): passes over the seams between parts, smallest pairs first, until one joins none.
+class PartJoiner {
+ public:
+  PartJoiner(CutTree& tree, const Unfolding& parts, const EdgeConstraints& cons, const Fitter& fitter,
+             double min_gap, const std::function<bool(int, int)>& may_join)
+      : t_(tree), parts_(parts), cons_(cons), fitter_(fitter), min_gap_(min_gap), may_join_(may_join) {}
+
+  void run() {
+    slits_ = count_slits(t_, min_gap_);
+    while (join_pass() > 0) {
+    }
+  }
+
+ private:
+  // The seams between two parts that may join, the smallest pair first, the longest seam of a pair first.
+  std::vector<EdgeId> links() const {
+    const Mesh& m = t_.mesh();
+    std::vector<EdgeId> out;
+    for (int e = 0; e < m.num_edges(); ++e) {
+      const EdgeId link(e);
+      if (t_.folded(link) || m.edges[e].boundary() || cons_.cut(link)) continue;
+      const auto& f = m.edges[e].face;
+      if (t_.piece(FaceId(f[0])) == t_.piece(FaceId(f[1]))) continue;
+      if (!may_join_(parts_.piece_of_face[f[0]], parts_.piece_of_face[f[1]])) continue;
+      out.push_back(link);
+    }
+    const auto pair_size = [&](EdgeId e) {
+      const auto& f = m.edges[e.index()].face;
+      return t_.piece_size(t_.piece(FaceId(f[0]))) + t_.piece_size(t_.piece(FaceId(f[1])));
+    };
+    std::stable_sort(out.begin(), out.end(), [&](EdgeId a, EdgeId b) {
+      return std::pair(pair_size(a), -parts_.edges[a.index()].length) <
+             std::pair(pair_size(b), -parts_.edges[b.index()].length);
+    });
+    return out;
+  }
+
+  int join_pass() {
+    const Mesh& m = t_.mesh();
+    int joined = 0;
+    for (EdgeId link : links()) {
+      const auto& f = m.edges[link.index()].face;
+      if (t_.piece(FaceId(f[0])) == t_.piece(FaceId(f[1]))) continue;
+      if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) continue;
+      t_.stitch(link);
+      const int slits = count_slits(t_, min_gap_);
+      if (slits <= slits_ && fits(t_.piece(FaceId(f[0])))) {
+        slits_ = slits;
+        ++joined;
+      } else {
+        t_.cut(link);
+      }
+    }
+    return joined;
+  }
+
+  bool fits(int piece) {
+    points_.clear();
+    for (int f = 0; f < t_.num_faces(); ++f)
+      if (t_.piece(FaceId(f)) == piece)
+        for (Vec2 p : t_.flat(FaceId(f)))
+          points_.push_back(p);
+    return fitter_.fits(convex_hull(std::move(points_)));
+  }
+
+  CutTree& t_;
+  const Unfolding& parts_;
+  const EdgeConstraints& cons_;
+  const Fitter& fitter_;
+  double min_gap_;
+  const std::function<bool(int, int)>& may_join_;
+  int slits_ = 0;
+  std::vector<Vec2> points_;
+};
+
+// An unfolding of `tree`'s state that keeps `parts`' flat faces marked where they stay folded.
+Unfolding flattened_like(const Mesh& mesh, const CutTree& tree, const Unfolding& parts) {
+  Unfolding result = flatten(mesh, tree.states());
+  for (std::size_t e = 0; e < parts.edges.size(); ++e)
+    result.edges[e].inside_face = parts.edges[e].inside_face && !result.edges[e].cut;
+  return result;
+}
+
+}  // namespace
+
+Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& o,
+                     const std::function<bool(int, int)>& may_join) {
+  const UnfoldContext ctx = make_context(mesh, o.cuts);
+  CutTree tree(ctx, edge_states(parts));
+  if (tree.overlap_count() > 0) return parts;
+  const Fitter sheet(o.mm_per_unit, o.room_mm * o.room_fraction);
+  PartJoiner(tree, parts, move_constraints(parts, o.constraints), sheet, o.seam_moves.min_gap_per_length,
+             may_join)
+      .run();
+  if (tree.piece_count() == parts.piece_count) return parts;
+  return flattened_like(mesh, tree, parts);
+}
+
 Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& o) {
   const UnfoldContext ctx = make_context(mesh, o.cuts);
   CutTree tree(ctx, edge_states(parts));
@@ -448,10 +548,7 @@ Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, con
   AcrossParts(tree, move_constraints(parts, o.constraints), tight_edges(mesh, o.cuts), sheet,
               o.seam_moves.min_gap_per_length)
       .run();
-  Unfolding result = flatten(mesh, tree.states());
-  for (std::size_t e = 0; e < parts.edges.size(); ++e)
-    result.edges[e].inside_face = parts.edges[e].inside_face && !result.edges[e].cut;
-  return result;
+  return flattened_like(mesh, tree, parts);
 }
 
 }  // namespace foldkit::unfold

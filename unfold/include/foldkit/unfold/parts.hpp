@@ -6,6 +6,7 @@
 // same mesh whose cuts are the old cuts plus the new ones, so every part is a sub-tree of an old piece
 // and overlaps nothing; then seams may move inside a part (PartOptions::move_seams), each move tested
 // for overlaps and for the part's room.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,15 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& unfolding, const
 /// cut fit beside it (options.cuts), options.constraints and the flat faces are kept, and the slits get
 /// fewer. As many parts as before; parts change shape, so the caller judges the packing again.
 Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& options);
+
+/// Parts joined back together along seams between them, where `may_join(a, b)` allows it for parts a
+/// and b of `parts` (e.g. parts that share a sheet): the smallest pairs first, each along one seam edge
+/// where the joined part stays overlap-free, fits options.room_mm scaled by options.room_fraction at
+/// options.mm_per_unit, keeps
+/// options.constraints' cuts and adds no slit (options.seam_moves.min_gap_per_length). Fewer parts are
+/// fewer seams a builder must match across parts; the caller judges the packing again.
+Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& options,
+                     const std::function<bool(int, int)>& may_join);
 
 /// Per face, the flat face it belongs to (faces joined by UnfoldEdge::inside_face), numbered from 0.
 std::vector<int> flat_face_of(const Unfolding& unfolding);
