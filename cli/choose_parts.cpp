@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -352,6 +353,11 @@ void fewer_seams_without_tab(PartChooser& chooser, std::vector<Candidate>& other
     best = std::move(*tie);
 }
 
+// Labels crossing a line or touching another.
+int labels_unclear(const layout::LayoutResult& r) {
+  return r.label_audit.crossing_lines + r.label_audit.touching;
+}
+
 // The slits the parts' own seam moves left, closed across parts (unfold::close_slits_across_parts). The
 // parts change shape, so they are laid out again, and kept when they take no more sheets, leave fewer
 // seams without a tab and no more labels crossing lines or touching (the cuts through flat regions
@@ -367,45 +373,60 @@ void close_slits_across_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
   c.hull_area = hull_area(c.parts.unfolding);
   c.estimated_sheets = best.estimated_sheets;
   chooser.lay_out(c);
-  const auto unclear = [](const layout::LayoutResult& r) {
-    return r.label_audit.crossing_lines + r.label_audit.touching;
-  };
   if (c.sheets <= best.sheets && c.layout->overall.dropped_tabs < best.layout->overall.dropped_tabs &&
-      unclear(*c.layout) <= unclear(*best.layout))
+      labels_unclear(*c.layout) <= labels_unclear(*best.layout))
     best = std::move(c);
 }
 
-// Parts that share a sheet, joined back along seams between them (unfold::join_parts): joined they are
-// fewer seams to match across parts. Joined up to the whole room, they often need another sheet; up to
-// a share of it, they still slip into the gaps. Each share is judged by the estimate, then by the full
-// layout, and the first that takes no more sheets is kept.
+// Parts that share a sheet, joined back along seams between them (unfold::join_parts), the smallest
+// pairs first: joined they are fewer seams to match across parts. All the joins the room allows often
+// need another sheet; then the most joins that keep the sheets (by the estimate) are searched for by
+// halving. Kept when the full layout takes no more sheets and leaves no more labels unclear and no more
+// seams without a tab.
 void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, PartChooser& chooser,
                            Candidate& best) {
-  constexpr double kJoinFractions[] = {1.0, 0.6, 0.4};
+  constexpr int kSearchSteps = 4;  // estimates after the first: joins found within 1/16 of all
   if (!best.layout || best.parts.unfolding.piece_count < 2) return;
   const std::vector<layout::PiecePlacement> placed = best.layout->placements;
   const auto same_sheet = [&](int a, int b) { return placed[a].sheet == placed[b].sheet; };
-  unfold::PartOptions po = chooser.part_options();
   const int before = best.parts.unfolding.piece_count;
-  int last_tried = before;
-  for (double fraction : kJoinFractions) {
-    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
-    po.room_fraction = fraction;
+  unfold::PartOptions whole_room = chooser.part_options();
+  whole_room.room_fraction = 1;
+  auto joined = [&](int most_joins) {
     Candidate c;
     c.parts = best.parts;
-    c.parts.unfolding = unfold::join_parts(mesh, best.parts.unfolding, po, same_sheet);
-    // A smaller share that joins as many as the larger one did joined the same: nothing new to judge.
-    const int parts = c.parts.unfolding.piece_count;
-    if (parts >= before || parts == last_tried) continue;
-    last_tried = parts;
+    c.parts.unfolding = unfold::join_parts(mesh, best.parts.unfolding, whole_room, same_sheet, most_joins);
     c.hull_area = hull_area(c.parts.unfolding);
-    chooser.estimate(c);
-    if (c.sheets > best.sheets) continue;
-    chooser.lay_out(c);
-    if (c.sheets > best.sheets) continue;
-    best = std::move(c);
-    return;
+    return c;
+  };
+  Candidate all = joined(std::numeric_limits<int>::max());
+  const int joins = before - all.parts.unfolding.piece_count;
+  if (joins == 0) return;
+  chooser.estimate(all);
+  std::optional<Candidate> kept;  // the most joins found that keep the sheets
+  if (all.sheets <= best.sheets) {
+    kept = std::move(all);
+  } else {
+    int fine = 0, costly = joins;  // joins known to keep the sheets, and known to cost one
+    for (int step = 0; step < kSearchSteps && costly - fine > 1; ++step) {
+      if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
+      const int middle = (fine + costly) / 2;
+      Candidate c = joined(middle);
+      chooser.estimate(c);
+      if (c.sheets <= best.sheets) {
+        fine = middle;
+        kept = std::move(c);
+      } else {
+        costly = middle;
+      }
+    }
   }
+  if (!kept) return;
+  chooser.lay_out(*kept);
+  // The seams left between joined parts open only a little near the join, where labels and tabs crowd.
+  if (kept->sheets <= best.sheets && labels_unclear(*kept->layout) <= labels_unclear(*best.layout) &&
+      kept->layout->overall.dropped_tabs <= best.layout->overall.dropped_tabs)
+    best = std::move(*kept);
 }
 
 }  // namespace

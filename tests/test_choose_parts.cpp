@@ -73,7 +73,7 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
 }
 
 TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
-  const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
+  const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
   o.size_mm = 250;
   cli::ChooseOptions as_split;
@@ -84,6 +84,11 @@ TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
   EXPECT_EQ(sheets_with_pieces(*joined.layout), sheets_with_pieces(*split.layout));
   EXPECT_LT(joined.unfolding.piece_count, split.unfolding.piece_count);
   EXPECT_EQ(joined.layout->placements.size(), static_cast<std::size_t>(joined.unfolding.piece_count));
+  const auto unclear = [](const layout::LayoutResult& r) {
+    return r.label_audit.crossing_lines + r.label_audit.touching;
+  };
+  EXPECT_LE(unclear(*joined.layout), unclear(*split.layout));
+  EXPECT_LE(joined.layout->overall.dropped_tabs, split.layout->overall.dropped_tabs);
   EXPECT_EQ(unfold::check_unfolding(ex.mesh, joined.unfolding), std::vector<std::string>{});
   for (std::size_t e = 0; e < joined.unfolding.edges.size(); ++e)
     if (joined.unfolding.edges[e].cut) {

@@ -446,12 +446,18 @@ namespace {
 class PartJoiner {
  public:
   PartJoiner(CutTree& tree, const Unfolding& parts, const EdgeConstraints& cons, const Fitter& fitter,
-             double min_gap, const std::function<bool(int, int)>& may_join)
-      : t_(tree), parts_(parts), cons_(cons), fitter_(fitter), min_gap_(min_gap), may_join_(may_join) {}
+             double min_gap, const std::function<bool(int, int)>& may_join, int most_joins)
+      : t_(tree),
+        parts_(parts),
+        cons_(cons),
+        fitter_(fitter),
+        min_gap_(min_gap),
+        may_join_(may_join),
+        left_(most_joins) {}
 
   void run() {
     slits_ = count_slits(t_, min_gap_);
-    while (join_pass() > 0) {
+    while (left_ > 0 && join_pass() > 0) {
     }
   }
 
@@ -483,6 +489,7 @@ class PartJoiner {
     const Mesh& m = t_.mesh();
     int joined = 0;
     for (EdgeId link : links()) {
+      if (left_ == 0) break;
       const auto& f = m.edges[link.index()].face;
       if (t_.piece(FaceId(f[0])) == t_.piece(FaceId(f[1]))) continue;
       if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) continue;
@@ -491,6 +498,7 @@ class PartJoiner {
       if (slits <= slits_ && fits(t_.piece(FaceId(f[0])))) {
         slits_ = slits;
         ++joined;
+        --left_;
       } else {
         t_.cut(link);
       }
@@ -513,6 +521,7 @@ class PartJoiner {
   const Fitter& fitter_;
   double min_gap_;
   const std::function<bool(int, int)>& may_join_;
+  int left_;  // joins still allowed
   int slits_ = 0;
   std::vector<Vec2> points_;
 };
@@ -528,13 +537,13 @@ Unfolding flattened_like(const Mesh& mesh, const CutTree& tree, const Unfolding&
 }  // namespace
 
 Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& o,
-                     const std::function<bool(int, int)>& may_join) {
+                     const std::function<bool(int, int)>& may_join, int most_joins) {
   const UnfoldContext ctx = make_context(mesh, o.cuts);
   CutTree tree(ctx, edge_states(parts));
   if (tree.overlap_count() > 0) return parts;
   const Fitter sheet(o.mm_per_unit, o.room_mm * o.room_fraction);
   PartJoiner(tree, parts, move_constraints(parts, o.constraints), sheet, o.seam_moves.min_gap_per_length,
-             may_join)
+             may_join, most_joins)
       .run();
   if (tree.piece_count() == parts.piece_count) return parts;
   return flattened_like(mesh, tree, parts);

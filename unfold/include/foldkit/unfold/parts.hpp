@@ -7,6 +7,7 @@
 // and overlaps nothing; then seams may move inside a part (PartOptions::move_seams), each move tested
 // for overlaps and for the part's room.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -113,9 +114,11 @@ Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, con
 /// where the joined part stays overlap-free, fits options.room_mm scaled by options.room_fraction at
 /// options.mm_per_unit, keeps
 /// options.constraints' cuts and adds no slit (options.seam_moves.min_gap_per_length). Fewer parts are
-/// fewer seams a builder must match across parts; the caller judges the packing again.
+/// fewer seams a builder must match across parts; the caller judges the packing again. At most
+/// `most_joins` joins, the first in that order: the caller may take fewer where all cost a sheet.
 Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& options,
-                     const std::function<bool(int, int)>& may_join);
+                     const std::function<bool(int, int)>& may_join,
+                     int most_joins = std::numeric_limits<int>::max());
 
 /// Per face, the flat face it belongs to (faces joined by UnfoldEdge::inside_face), numbered from 0.
 std::vector<int> flat_face_of(const Unfolding& unfolding);
