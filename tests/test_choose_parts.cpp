@@ -23,6 +23,14 @@ unfold::PartOptions largest_parts(const unfold::Unfolding& u, const layout::Layo
   p.growth = unfold::PartGrowth::Tree;
   return p;
 }
+
+// The partitions as split, without parts on a sheet joined.
+cli::ChooseOptions as_split() {
+  cli::ChooseOptions o;
+  o.join_on_a_sheet = false;
+  return o;
+}
+
 }  // namespace
 
 TEST(ChooseParts, SmallerPartsAreKeptWhenTheySaveASheet) {
@@ -50,9 +58,7 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
   layout::LayoutOptions o;
   o.size_mm = 140;
   // The partitions as split: joined parts on a sheet would tie with none of them.
-  cli::ChooseOptions as_split;
-  as_split.join_on_a_sheet = false;
-  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split);
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split());
   ASSERT_TRUE(chosen.layout);
   const long sheets = sheets_with_pieces(*chosen.layout);
   int ties = 0;
@@ -76,9 +82,7 @@ TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
   const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
   o.size_mm = 250;
-  cli::ChooseOptions as_split;
-  as_split.join_on_a_sheet = false;
-  const cli::ChosenParts split = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split);
+  const cli::ChosenParts split = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split());
   const cli::ChosenParts joined = cli::choose_parts(ex.mesh, ex.unfolding, o);
   ASSERT_TRUE(split.layout && joined.layout);
   EXPECT_EQ(sheets_with_pieces(*joined.layout), sheets_with_pieces(*split.layout));

@@ -244,6 +244,16 @@ bool labels_fit(const std::vector<LabelFit>& fit, EdgeId e) {
   return fit.empty() || fit[static_cast<std::size_t>(e.index())] == LabelFit::BothSides;
 }
 
+// Whether piece `piece` of `tree` fits the fitter's room.
+bool piece_fits(const CutTree& tree, int piece, const Fitter& fitter) {
+  std::vector<Vec2> points;
+  for (int f = 0; f < tree.num_faces(); ++f)
+    if (tree.piece(FaceId(f)) == piece)
+      for (Vec2 p : tree.flat(FaceId(f)))
+        points.push_back(p);
+  return fitter.fits(convex_hull(std::move(points)));
+}
+
 // close_slits_across_parts (parts.hpp): each slit once, the first join found that lowers the slit
 // count kept.
 class AcrossParts {
@@ -311,14 +321,7 @@ class AcrossParts {
     return false;
   }
 
-  bool fits(int piece) {
-    points_.clear();
-    for (int f = 0; f < t_.num_faces(); ++f)
-      if (t_.piece(FaceId(f)) == piece)
-        for (Vec2 p : t_.flat(FaceId(f)))
-          points_.push_back(p);
-    return fitter_.fits(convex_hull(std::move(points_)));
-  }
+  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
 
   CutTree& t_;
   const Mesh& m_;
@@ -329,7 +332,6 @@ class AcrossParts {
   int slits_ = 0;
   std::vector<std::vector<int>> edges_at_;
   std::vector<int> side_;
-  std::vector<Vec2> points_;
 };
 
 // `state` (the parts) with seams moved inside each part (seam_moves.hpp) where the moved part still fits
@@ -506,14 +508,7 @@ class PartJoiner {
     return joined;
   }
 
-  bool fits(int piece) {
-    points_.clear();
-    for (int f = 0; f < t_.num_faces(); ++f)
-      if (t_.piece(FaceId(f)) == piece)
-        for (Vec2 p : t_.flat(FaceId(f)))
-          points_.push_back(p);
-    return fitter_.fits(convex_hull(std::move(points_)));
-  }
+  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
 
   CutTree& t_;
   const Unfolding& parts_;
@@ -523,7 +518,6 @@ class PartJoiner {
   const std::function<bool(int, int)>& may_join_;
   int left_;  // joins still allowed
   int slits_ = 0;
-  std::vector<Vec2> points_;
 };
 
 // An unfolding of `tree`'s state that keeps `parts`' flat faces marked where they stay folded.
