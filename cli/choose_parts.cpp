@@ -423,7 +423,8 @@ void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions
   }
   if (!kept) return;
   chooser.lay_out(*kept);
-  // The seams left between joined parts open only a little near the join, where labels and tabs crowd.
+  // Joins change the tabs and the packing: on sliver meshes at 150 mm they left more labels unclear
+  // (label sweep 923 -> 1,024 of 17,700 without this check).
   if (kept->sheets <= best.sheets && labels_unclear(*kept->layout) <= labels_unclear(*best.layout) &&
       kept->layout->overall.dropped_tabs <= best.layout->overall.dropped_tabs)
     best = std::move(*kept);
