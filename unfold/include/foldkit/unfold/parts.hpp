@@ -112,10 +112,10 @@ Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, con
 /// Parts joined back together along seams between them, where `may_join(a, b)` allows it for parts a
 /// and b of `parts` (e.g. parts that share a sheet): the smallest pairs first, each along one seam edge
 /// where the joined part stays overlap-free, fits options.room_mm scaled by options.room_fraction at
-/// options.mm_per_unit, keeps
-/// options.constraints' cuts and adds no slit (options.seam_moves.min_gap_per_length). Fewer parts are
-/// fewer seams a builder must match across parts; the caller judges the packing again. At most
-/// `most_joins` joins, the first in that order: the caller may take fewer where all cost a sheet.
+/// options.mm_per_unit, keeps options.constraints' cuts and adds no slit
+/// (options.seam_moves.min_gap_per_length). Fewer parts are fewer seams a builder must match across
+/// parts; the caller judges the packing again. At most `most_joins` joins, the first in that order: the
+/// caller may take fewer where all cost a sheet.
 Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& options,
                      const std::function<bool(int, int)>& may_join,
                      int most_joins = std::numeric_limits<int>::max());
