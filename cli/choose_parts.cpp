@@ -440,11 +440,18 @@ unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::Unfo
   return po;
 }
 
-ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u, const layout::LayoutOptions& o,
-                         const unfold::PartOptions& parts, const ChooseOptions& choose) {
-  if (!o.size_mm || o.fit || !o.split_oversized || !(u.model_extent > 0)) return {u, 0, 0, std::nullopt};
+ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                         const layout::LayoutOptions& asked, const unfold::PartOptions& parts,
+                         const ChooseOptions& choose) {
+  if (!asked.size_mm || asked.fit || !asked.split_oversized || !(u.model_extent > 0))
+    return {u, 0, 0, std::nullopt};
   constexpr int kManyFaces = 1500;  // above it: fewer trials and full layouts, no re-split of the last sheet
+  // Large meshes pack at the rotations that keep a 2,000-face layout within 3 s: at 24 the slowest took
+  // 3.1 s (cheburashka_2000 at 250 mm; 2.6 s at 8) for 2 sheets of 114.
+  constexpr int kLargeMeshRotations = 8;
   const bool large = mesh.num_faces() > kManyFaces;
+  layout::LayoutOptions o = asked;
+  if (large) o.pack.rotations = std::min(o.pack.rotations, kLargeMeshRotations);
   // Seams move inside the parts of smaller meshes only: on 2,000-face meshes the moves doubled some
   // layouts (threeholes_2000 at 150 mm: 1.2 -> 2.9 s) and left more labels crossing lines at 250 mm
   // (cheburashka_2000: 173 -> 324); up to 1,000 faces they leave fewer (9,729 -> 9,507 of 39,214).

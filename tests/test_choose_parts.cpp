@@ -79,9 +79,9 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
 }
 
 TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
-  const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
+  const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
-  o.size_mm = 250;
+  o.size_mm = 200;
   const cli::ChosenParts split = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, as_split());
   const cli::ChosenParts joined = cli::choose_parts(ex.mesh, ex.unfolding, o);
   ASSERT_TRUE(split.layout && joined.layout);

@@ -84,7 +84,7 @@ TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {
   EXPECT_DOUBLE_EQ(j["paper_mm"][0].get<double>(), 210);
   EXPECT_DOUBLE_EQ(j["paper_mm"][1].get<double>(), 148);
   ASSERT_EQ(j["sheets"].size(), j["sheet_count"].get<std::size_t>());
-  int pieces = 0, tabs = 0, dropped = 0;
+  int pieces = 0, tabs = 0, dropped = 0, split = 0;
   for (const auto& s : j["sheets"]) {
     // A sheet may hold only the glue-order list; one with pieces has some coverage.
     EXPECT_EQ(s["coverage"].get<double>() > 0, s["piece_count"].get<int>() > 0);
@@ -92,10 +92,12 @@ TEST(CliMake, JsonReportsCoverageTabsAndLabelsPerSheetAndOverall) {
     pieces += s["piece_count"].get<int>();
     tabs += s["tab_count"].get<int>();
     dropped += s["dropped_tab_count"].get<int>();
+    split += s["split_tab_count"].get<int>();
   }
   EXPECT_EQ(pieces, j["piece_count"].get<int>());
   EXPECT_EQ(tabs, j["overall"]["tab_count"].get<int>());
-  EXPECT_EQ(tabs + dropped, j["seam_count"].get<int>());
+  // A split tab's two halves count as two tabs of one seam.
+  EXPECT_EQ(tabs - split + dropped, j["seam_count"].get<int>());
   EXPECT_GE(j["overall"]["min_label_mm"].get<double>(), 1.8 - 1e-9);
   EXPECT_EQ(j["assembly_steps"].size(), j["seam_count"].get<std::size_t>());
 }

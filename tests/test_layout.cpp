@@ -629,7 +629,7 @@ int scale_squares_on(const Sheet& sheet) {
 
 TEST(Layout, EverySheetGetsItsScaleSquareWhereACornerKeptForItCostsNoSheet) {
   // Small paper, so that the pieces crowd every sheet: packed as usual, some sheets keep no spot for
-  // the square (bob_350's second sheet), and the pieces are packed again with a corner kept for it.
+  // the square (penguin_500's), and the pieces are packed again with a corner kept for it.
   for (const char* name : kExamples) {
     const auto& ex = test::unfolded_example(name);
     LayoutOptions o = at_size(120);
@@ -643,7 +643,7 @@ TEST(Layout, EverySheetGetsItsScaleSquareWhereACornerKeptForItCostsNoSheet) {
       EXPECT_LE(scale_squares_on(sheet), 1) << name;
       without += scale_squares_on(sheet) == 0;
     }
-    if (std::string(name) == "bob_350.obj") {
+    if (std::string(name) == "penguin_500.obj") {
       EXPECT_EQ(without, 0) << "the kept corner holds it";
     }
     // Where a kept corner would cost a sheet (spot_350 here), the note says how many sheets go without.

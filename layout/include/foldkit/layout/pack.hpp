@@ -33,7 +33,10 @@ struct PackOptions {
   std::vector<Box2> keep_out_mm;     ///< regions nothing may come within spacing_mm of
   double spacing_mm = 2;             ///< least gap between two items
   double cell_mm = 0.5;              ///< raster resolution: smaller packs tighter, costs more time
-  int rotations = 8;                 ///< evenly spaced rotations tried (4: multiples of 90 degrees)
+  /// Evenly spaced rotations tried (4: multiples of 90 degrees). 24 (15 degrees apart) against 8, over
+  /// `bench --layout` up to 1,000 faces: 466 sheets instead of 472, 13 runs more than one sheet over the
+  /// area bound instead of 16, for 22% more time.
+  int rotations = 24;
   /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
   /// needs (fewer for many items); 0: none.
   int shaken_orders = 16;
