@@ -423,8 +423,9 @@ void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions
   }
   if (!kept) return;
   chooser.lay_out(*kept);
-  // Joins change the tabs and the packing: on sliver meshes at 150 mm they left more labels unclear
-  // (label sweep 923 -> 1,024 of 17,700 without this check).
+  // The estimate packs no tabs grown for labels: where the joined parts fill the sheet, the full layout
+  // falls back to plain tabs and leaves more labels unclear (label sweep 923 -> 1,024 of 17,700 without
+  // this check; docs/layout.md).
   if (kept->sheets <= best.sheets && labels_unclear(*kept->layout) <= labels_unclear(*best.layout) &&
       kept->layout->overall.dropped_tabs <= best.layout->overall.dropped_tabs)
     best = std::move(*kept);
