@@ -35,7 +35,7 @@ struct PackOptions {
   double cell_mm = 0.5;              ///< raster resolution: smaller packs tighter, costs more time
   /// Evenly spaced rotations tried (4: multiples of 90 degrees). 24 (15 degrees apart) against 8, over
   /// `bench --layout` up to 1,000 faces: 466 sheets instead of 472, 13 runs more than one sheet over the
-  /// area bound instead of 16, for 22% more time.
+  /// area bound instead of 16, for 22-30% more time.
   int rotations = 24;
   /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
   /// needs (fewer for many items); 0: none.
