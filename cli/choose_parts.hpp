@@ -21,6 +21,9 @@ struct ChosenParts {
   int new_pieces = 0;           ///< parts they were cut into
   /// The layout of `unfolding` with the options given, when the choice needed one (a split was tried).
   std::optional<layout::LayoutResult> layout;
+  /// The parts are patches grown over the surface (unfold::patch_parts), every piece cut anew: parts cut
+  /// from the too large pieces needed more sheets.
+  bool patches = false;
 };
 
 /// What the choice may do beyond picking a partition.
@@ -28,6 +31,9 @@ struct ChooseOptions {
   /// Parts that share a sheet are joined back along seams between them where that costs no sheet:
   /// fewer parts, fewer seams to match across parts. Off: the partitions as split.
   bool join_on_a_sheet = true;
+  /// Besides parts cut from the unfolding's pieces, patches grown over the surface are tried
+  /// (unfold::patch_parts): more parts, but compact ones that fill a sheet where a spindly net's do not.
+  bool patches = true;
 };
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or

@@ -26,7 +26,13 @@ std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
   unfold::UnfoldResult& result = run.result;
   ChosenParts parts = choose_parts(run.loaded.mesh, result.unfolding, layout_options,
                                    part_options_of(run.loaded.mesh, run.options));
-  if (parts.split_pieces > 0)
+  if (parts.patches)
+    result.notes.push_back(std::to_string(parts.split_pieces) +
+                           " piece(s) larger than the paper at this size: the model cut into " +
+                           std::to_string(parts.new_pieces) +
+                           " compact parts, which take fewer sheets than parts cut from the pieces (--fit or "
+                           "--no-split keeps them whole)");
+  else if (parts.split_pieces > 0)
     result.notes.push_back(
         std::to_string(parts.split_pieces) + " piece(s) larger than the paper at this size cut into " +
         std::to_string(parts.new_pieces) + " parts that fit (--fit or --no-split keeps them whole)");

@@ -169,3 +169,53 @@ TEST(ChooseParts, TilesOfTheRoomWithTheirBordersFillThePrintableArea) {
   EXPECT_NEAR(wide_half.y, layout::piece_room_mm(o).y, 1e-9);
   EXPECT_LT(wide_half.x, 0.5 * layout::piece_room_mm(o).x);
 }
+
+int labels_unclear(const layout::LayoutResult& r) {
+  return r.label_audit.crossing_lines + r.label_audit.touching;
+}
+
+TEST(ChooseParts, PatchesGrownOverTheSurfaceAreKeptWhenPartsCutFromTheNetNeedASheetMore) {
+  // Bob at 180 mm: parts cut from its one-piece net take 3 sheets, compact patches of the surface 2.
+  const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 180;
+  cli::ChooseOptions net_only;
+  net_only.patches = false;
+  const cli::ChosenParts cut = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, net_only);
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  ASSERT_TRUE(cut.layout && chosen.layout);
+  EXPECT_FALSE(cut.patches);
+  EXPECT_TRUE(chosen.patches);
+  EXPECT_EQ(unfold::check_unfolding(ex.mesh, chosen.unfolding), std::vector<std::string>{});
+  EXPECT_LT(sheets_with_pieces(*chosen.layout), sheets_with_pieces(*cut.layout));
+  EXPECT_EQ(chosen.new_pieces, chosen.unfolding.piece_count);
+  EXPECT_GT(chosen.split_pieces, 0);
+  EXPECT_LE(labels_unclear(*chosen.layout), 0.02 * chosen.layout->label_audit.labels);
+}
+
+TEST(ChooseParts, PatchesThatLeaveManyLabelsUnclearAreNotWorthTheSheetTheySave) {
+  // The fish at 150 mm: patches fit one sheet where the net's parts take two, but only with tabs planned
+  // as if there were no labels; the labels of their many seams through small faces then cross lines.
+  const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  layout::LayoutOptions plain_tabs = o;
+  plain_tabs.tab_sides_for_labels = plain_tabs.tabs_for_labels = plain_tabs.split_tabs_for_labels = false;
+  // The densest of the patches choose_parts tries (each fraction of the room).
+  std::optional<layout::LayoutResult> dense;
+  for (double fraction : {1.0, 0.5, 0.7, 0.35}) {
+    unfold::PartOptions p = largest_parts(ex.unfolding, o);
+    p.room_fraction = fraction;
+    const std::optional<unfold::Unfolding> patches = unfold::patch_parts(ex.mesh, ex.unfolding, p);
+    ASSERT_TRUE(patches.has_value());
+    layout::LayoutResult r = layout::layout_sheets(*patches, plain_tabs);
+    if (!dense || sheets_with_pieces(r) < sheets_with_pieces(*dense)) dense = std::move(r);
+  }
+  const cli::ChosenParts chosen = cli::choose_parts(ex.mesh, ex.unfolding, o);
+  ASSERT_TRUE(chosen.layout);
+  ASSERT_LT(sheets_with_pieces(*dense), sheets_with_pieces(*chosen.layout));
+  EXPECT_GT(labels_unclear(*dense), 0.05 * dense->label_audit.labels);
+  EXPECT_FALSE(chosen.patches);
+  EXPECT_LT(labels_unclear(*chosen.layout) + 0.01 * chosen.layout->label_audit.labels,
+            labels_unclear(*dense));
+}

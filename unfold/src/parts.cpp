@@ -334,6 +334,87 @@ class AcrossParts {
   std::vector<int> side_;
 };
 
+// Seams between two parts moved off edges too tight for their labels: a small side of one part next to
+// such a seam (the faces beyond one of its fold edges, the seam's face among them) changes part, folded
+// along the seam and cut where it hung, when the new cut's labels fit better, the part it joins stays
+// overlap-free and fits the room, and the slits get no more. Forced cuts and folds (and so flat faces)
+// are kept.
+class BoundaryMoves {
+ public:
+  BoundaryMoves(CutTree& tree, const EdgeConstraints& cons, const std::vector<LabelFit>& fit,
+                const Fitter& fitter, double min_gap)
+      : t_(tree), m_(tree.mesh()), cons_(cons), fit_(fit), fitter_(fitter), min_gap_(min_gap) {}
+
+  void run() {
+    if (fit_.empty()) return;
+    slits_ = count_slits(t_, min_gap_);
+    for (int pass = 0; pass < kPasses; ++pass) {
+      int moved = 0;
+      for (int c = 0; c < m_.num_edges(); ++c)
+        if (between_parts(EdgeId(c)) && fit_[static_cast<std::size_t>(c)] != LabelFit::BothSides)
+          moved += move_off(EdgeId(c)) ? 1 : 0;
+      if (moved == 0) break;
+    }
+  }
+
+ private:
+  static constexpr int kPasses = 4;
+  // A side larger than this is not moved: the move is a local correction of a boundary, not a repartition.
+  static constexpr int kMostFacesMoved = 12;
+
+  bool between_parts(EdgeId c) const {
+    const auto& edge = m_.edge(c);
+    return !edge.boundary() && !t_.folded(c) && !cons_.cut(c) &&
+           t_.piece(edge.face_id(0)) != t_.piece(edge.face_id(1));
+  }
+
+  int grade(EdgeId e) const { return static_cast<int>(fit_[static_cast<std::size_t>(e.index())]); }
+
+  // Tries each end face of seam c and each of its fold edges; true once a move is kept.
+  bool move_off(EdgeId c) {
+    for (int end = 0; end < 2; ++end) {
+      const FaceId x = m_.edge(c).face_id(end);
+      for (int a : m_.face_edges[x.index()]) {
+        const EdgeId hang(a);
+        if (!t_.folded(hang) || cons_.fold(hang) || grade(hang) >= grade(c)) continue;
+        t_.smaller_side(hang, side_);
+        if (!t_.in_side(x) || static_cast<int>(side_.size()) > kMostFacesMoved) continue;
+        if (try_move(c, hang, m_.edge(c).face_id(1 - end))) return true;
+      }
+    }
+    return false;
+  }
+
+  // Cuts `hang`, folds `c` (its side joins the part of face `across`); undone unless it is a gain.
+  bool try_move(EdgeId c, EdgeId hang, FaceId across) {
+    t_.cut(hang);
+    if (!t_.curvature_allows_fold(c) || t_.stitch_cost(c, 0) > 0) {
+      t_.stitch(hang);
+      return false;
+    }
+    t_.stitch(c);
+    const int slits = count_slits(t_, min_gap_);
+    if (slits <= slits_ && fits(t_.piece(across))) {
+      slits_ = slits;
+      return true;
+    }
+    t_.cut(c);
+    t_.stitch(hang);
+    return false;
+  }
+
+  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
+
+  CutTree& t_;
+  const Mesh& m_;
+  const EdgeConstraints& cons_;
+  const std::vector<LabelFit>& fit_;
+  const Fitter& fitter_;
+  double min_gap_;
+  int slits_ = 0;
+  std::vector<int> side_;
+};
+
 // `state` (the parts) with seams moved inside each part (seam_moves.hpp) where the moved part still fits
 // its room: `room` says per face which fitter judges its part.
 EdgeStates with_seams_moved(const Mesh& mesh, const Unfolding& u, const EdgeStates& state,
@@ -541,6 +622,28 @@ Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions
       .run();
   if (tree.piece_count() == parts.piece_count) return parts;
   return flattened_like(mesh, tree, parts);
+}
+
+std::optional<Unfolding> patch_parts(const Mesh& mesh, const Unfolding& unfolding, const PartOptions& o) {
+  // Every flat face a part of its own, the forced folds kept: the patches grow from there.
+  EdgeStates faces_apart = edge_states(unfolding);
+  for (std::size_t e = 0; e < unfolding.edges.size(); ++e) {
+    const UnfoldEdge& edge = unfolding.edges[e];
+    const EdgeId id(static_cast<int>(e));
+    if (!edge.inside_face && !edge.boundary() && !o.constraints.fold(id)) faces_apart[id] = EdgeState::Cut;
+  }
+  Unfolding apart = flatten(mesh, faces_apart);
+  for (std::size_t e = 0; e < unfolding.edges.size(); ++e)
+    apart.edges[e].inside_face = unfolding.edges[e].inside_face && !apart.edges[e].cut;
+  if (CutTree(make_context(mesh, o.cuts), faces_apart).overlap_count() > 0) return std::nullopt;
+  const Unfolding joined = join_parts(mesh, apart, o, [](int, int) { return true; });
+  const UnfoldContext ctx = make_context(mesh, o.cuts);
+  CutTree tree(ctx, edge_states(joined));
+  const Fitter room(o.mm_per_unit, o.room_mm * o.room_fraction);
+  BoundaryMoves(tree, move_constraints(joined, o.constraints), tight_edges(mesh, o.cuts), room,
+                o.seam_moves.min_gap_per_length)
+      .run();
+  return flattened_like(mesh, tree, joined);
 }
 
 Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions& o) {
