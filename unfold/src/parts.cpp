@@ -254,100 +254,67 @@ bool piece_fits(const CutTree& tree, int piece, const Fitter& fitter) {
   return fitter.fits(convex_hull(std::move(points)));
 }
 
-// close_slits_across_parts (parts.hpp): each slit once, the first join found that lowers the slit
-// count kept.
+// Trial folds between parts (close_slits_across_parts, boundary moves, join_parts): a fold is kept when
+// the part it makes fits the room and the slits get no more, or fewer where asked.
+class TrialFolds {
+ public:
+  TrialFolds(CutTree& tree, const Fitter& fitter, double min_gap)
+      : t_(tree), fitter_(fitter), min_gap_(min_gap), slits_(count_slits(tree, min_gap)) {}
+
+  enum class Slits : unsigned char { NoMore, Fewer };
+
+  // Folds `link` where that overlaps nothing and the curvature allows; keeps it (true) when the slits
+  // allow and the part then holding `face` fits, else cuts it again.
+  bool keep(EdgeId link, FaceId face, Slits rule) {
+    if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) return false;
+    t_.stitch(link);
+    const int slits = count_slits(t_, min_gap_);
+    if ((rule == Slits::Fewer ? slits < slits_ : slits <= slits_) &&
+        piece_fits(t_, t_.piece(face), fitter_)) {
+      slits_ = slits;
+      return true;
+    }
+    t_.cut(link);
+    return false;
+  }
+
+  double min_gap() const { return min_gap_; }
+
+ private:
+  CutTree& t_;
+  const Fitter& fitter_;
+  double min_gap_;
+  int slits_;
+};
+
+// Moves of faces from one part to a neighbouring one: closing slits (close_slits_across_parts, parts.hpp)
+// and moving the seams between patches off edges without room for their labels (patch_parts).
 class AcrossParts {
  public:
   AcrossParts(CutTree& tree, const EdgeConstraints& cons, const std::vector<LabelFit>& fit,
               const Fitter& fitter, double min_gap)
-      : t_(tree), m_(tree.mesh()), cons_(cons), fit_(fit), fitter_(fitter), min_gap_(min_gap) {
+      : t_(tree), m_(tree.mesh()), cons_(cons), fit_(fit), folds_(tree, fitter, min_gap) {
     edges_at_.resize(static_cast<std::size_t>(m_.num_vertices()));
     for (int e = 0; e < m_.num_edges(); ++e)
       for (int v : m_.edges[e].v)
         edges_at_[static_cast<std::size_t>(v)].push_back(e);
   }
 
-  void run() {
-    slits_ = count_slits(t_, min_gap_);
+  // Each slit once, the first join found that lowers the slits.
+  void close_slits() {
     for (int c = 0; c < m_.num_edges(); ++c)
       if (is_slit(c))
         for (int v : m_.edges[c].v)
           if (close_at(v)) break;
   }
 
- private:
-  bool is_slit(int c) const {
-    const auto& edge = m_.edges[c];
-    return !edge.boundary() && !t_.folded(EdgeId(c)) &&
-           t_.piece(edge.face_id(0)) == t_.piece(edge.face_id(1)) &&
-           slit_cost(seam_gap_per_length(t_, EdgeId(c)), min_gap_) > 0;
-  }
-
-  // Tries each fold at v: cut it, give the side cut off to a neighbour. True once one is kept.
-  bool close_at(int v) {
-    for (int e : edges_at_[static_cast<std::size_t>(v)]) {
-      const EdgeId cut(e);
-      if (!t_.folded(cut) || cons_.fold(cut)) continue;
-      // Only where both labels fit: cuts through flat regions of sliver faces left labels crossing lines.
-      if (!labels_fit(fit_, cut)) continue;
-      t_.smaller_side(cut, side_);
-      const std::vector<int> side = side_;
-      const auto& ef = m_.edges[e].face;
-      const FaceId rest(t_.in_side(FaceId(ef[0])) ? ef[1] : ef[0]);
-      t_.cut(cut);
-      if (join_neighbour(side, rest)) return true;
-      t_.stitch(cut);
-    }
-    return false;
-  }
-
-  bool join_neighbour(const std::vector<int>& side, FaceId rest) {
-    for (int x : side)
-      for (int a : m_.face_edges[x]) {
-        const EdgeId link(a);
-        if (t_.folded(link) || m_.edges[a].boundary() || cons_.cut(link)) continue;
-        const FaceId y = t_.across(link, FaceId(x));
-        // Piece ids change as trial joins are undone: asked afresh.
-        if (t_.piece(y) == t_.piece(FaceId(x)) || t_.piece(y) == t_.piece(rest)) continue;
-        if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) continue;
-        t_.stitch(link);
-        const int slits = count_slits(t_, min_gap_);
-        if (slits < slits_ && fits(t_.piece(y))) {
-          slits_ = slits;
-          return true;
-        }
-        t_.cut(link);
-      }
-    return false;
-  }
-
-  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
-
-  CutTree& t_;
-  const Mesh& m_;
-  const EdgeConstraints& cons_;
-  const std::vector<LabelFit>& fit_;
-  const Fitter& fitter_;
-  double min_gap_;
-  int slits_ = 0;
-  std::vector<std::vector<int>> edges_at_;
-  std::vector<int> side_;
-};
-
-// Seams between two parts moved off edges too tight for their labels: a small side of one part next to
-// such a seam (the faces beyond one of its fold edges, the seam's face among them) changes part, folded
-// along the seam and cut where it hung, when the new cut's labels fit better, the part it joins stays
-// overlap-free and fits the room, and the slits get no more. Forced cuts and folds (and so flat faces)
-// are kept.
-class BoundaryMoves {
- public:
-  BoundaryMoves(CutTree& tree, const EdgeConstraints& cons, const std::vector<LabelFit>& fit,
-                const Fitter& fitter, double min_gap)
-      : t_(tree), m_(tree.mesh()), cons_(cons), fit_(fit), fitter_(fitter), min_gap_(min_gap) {}
-
-  void run() {
+  // Seams between two parts moved off edges too tight for their labels: a small side of one part next to
+  // such a seam (the faces beyond one of its fold edges, the seam's face among them) changes part, folded
+  // along the seam and cut where it hung, when the new cut's labels fit better, the part it joins stays
+  // overlap-free and fits the room, and the slits get no more. Forced cuts and folds (and so flat faces)
+  // are kept.
+  void move_off_tight_edges() {
     if (fit_.empty()) return;
-    slits_ = count_slits(t_, min_gap_);
     for (int pass = 0; pass < kPasses; ++pass) {
       int moved = 0;
       for (int c = 0; c < m_.num_edges(); ++c)
@@ -388,30 +355,55 @@ class BoundaryMoves {
   // Cuts `hang`, folds `c` (its side joins the part of face `across`); undone unless it is a gain.
   bool try_move(EdgeId c, EdgeId hang, FaceId across) {
     t_.cut(hang);
-    if (!t_.curvature_allows_fold(c) || t_.stitch_cost(c, 0) > 0) {
-      t_.stitch(hang);
-      return false;
-    }
-    t_.stitch(c);
-    const int slits = count_slits(t_, min_gap_);
-    if (slits <= slits_ && fits(t_.piece(across))) {
-      slits_ = slits;
-      return true;
-    }
-    t_.cut(c);
+    if (folds_.keep(c, across, TrialFolds::Slits::NoMore)) return true;
     t_.stitch(hang);
     return false;
   }
 
-  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
+  bool is_slit(int c) const {
+    const auto& edge = m_.edges[c];
+    return !edge.boundary() && !t_.folded(EdgeId(c)) &&
+           t_.piece(edge.face_id(0)) == t_.piece(edge.face_id(1)) &&
+           slit_cost(seam_gap_per_length(t_, EdgeId(c)), folds_.min_gap()) > 0;
+  }
+
+  // Tries each fold at v: cut it, give the side cut off to a neighbour. True once one is kept.
+  bool close_at(int v) {
+    for (int e : edges_at_[static_cast<std::size_t>(v)]) {
+      const EdgeId cut(e);
+      if (!t_.folded(cut) || cons_.fold(cut)) continue;
+      // Only where both labels fit: cuts through flat regions of sliver faces left labels crossing lines.
+      if (!labels_fit(fit_, cut)) continue;
+      t_.smaller_side(cut, side_);
+      const std::vector<int> side = side_;
+      const auto& ef = m_.edges[e].face;
+      const FaceId rest(t_.in_side(FaceId(ef[0])) ? ef[1] : ef[0]);
+      t_.cut(cut);
+      if (join_neighbour(side, rest)) return true;
+      t_.stitch(cut);
+    }
+    return false;
+  }
+
+  bool join_neighbour(const std::vector<int>& side, FaceId rest) {
+    for (int x : side)
+      for (int a : m_.face_edges[x]) {
+        const EdgeId link(a);
+        if (t_.folded(link) || m_.edges[a].boundary() || cons_.cut(link)) continue;
+        const FaceId y = t_.across(link, FaceId(x));
+        // Piece ids change as trial joins are undone: asked afresh.
+        if (t_.piece(y) == t_.piece(FaceId(x)) || t_.piece(y) == t_.piece(rest)) continue;
+        if (folds_.keep(link, y, TrialFolds::Slits::Fewer)) return true;
+      }
+    return false;
+  }
 
   CutTree& t_;
   const Mesh& m_;
   const EdgeConstraints& cons_;
   const std::vector<LabelFit>& fit_;
-  const Fitter& fitter_;
-  double min_gap_;
-  int slits_ = 0;
+  TrialFolds folds_;
+  std::vector<std::vector<int>> edges_at_;
   std::vector<int> side_;
 };
 
@@ -533,13 +525,11 @@ class PartJoiner {
       : t_(tree),
         parts_(parts),
         cons_(cons),
-        fitter_(fitter),
-        min_gap_(min_gap),
+        folds_(tree, fitter, min_gap),
         may_join_(may_join),
         left_(most_joins) {}
 
   void run() {
-    slits_ = count_slits(t_, min_gap_);
     while (left_ > 0 && join_pass() > 0) {
     }
   }
@@ -575,30 +565,20 @@ class PartJoiner {
       if (left_ == 0) break;
       const auto& f = m.edges[link.index()].face;
       if (t_.piece(FaceId(f[0])) == t_.piece(FaceId(f[1]))) continue;
-      if (!t_.curvature_allows_fold(link) || t_.stitch_cost(link, 0) > 0) continue;
-      t_.stitch(link);
-      const int slits = count_slits(t_, min_gap_);
-      if (slits <= slits_ && fits(t_.piece(FaceId(f[0])))) {
-        slits_ = slits;
+      if (folds_.keep(link, FaceId(f[0]), TrialFolds::Slits::NoMore)) {
         ++joined;
         --left_;
-      } else {
-        t_.cut(link);
       }
     }
     return joined;
   }
 
-  bool fits(int piece) { return piece_fits(t_, piece, fitter_); }
-
   CutTree& t_;
   const Unfolding& parts_;
   const EdgeConstraints& cons_;
-  const Fitter& fitter_;
-  double min_gap_;
+  TrialFolds folds_;
   const std::function<bool(int, int)>& may_join_;
   int left_;  // joins still allowed
-  int slits_ = 0;
 };
 
 // An unfolding of `tree`'s state that keeps `parts`' flat faces marked where they stay folded.
@@ -640,9 +620,9 @@ std::optional<Unfolding> patch_parts(const Mesh& mesh, const Unfolding& unfoldin
   const UnfoldContext ctx = make_context(mesh, o.cuts);
   CutTree tree(ctx, edge_states(joined));
   const Fitter room(o.mm_per_unit, o.room_mm * o.room_fraction);
-  BoundaryMoves(tree, move_constraints(joined, o.constraints), tight_edges(mesh, o.cuts), room,
-                o.seam_moves.min_gap_per_length)
-      .run();
+  AcrossParts(tree, move_constraints(joined, o.constraints), tight_edges(mesh, o.cuts), room,
+              o.seam_moves.min_gap_per_length)
+      .move_off_tight_edges();
   return flattened_like(mesh, tree, joined);
 }
 
@@ -653,7 +633,7 @@ Unfolding close_slits_across_parts(const Mesh& mesh, const Unfolding& parts, con
   const Fitter sheet(o.mm_per_unit, o.room_mm);
   AcrossParts(tree, move_constraints(parts, o.constraints), tight_edges(mesh, o.cuts), sheet,
               o.seam_moves.min_gap_per_length)
-      .run();
+      .close_slits();
   return flattened_like(mesh, tree, parts);
 }
 
