@@ -312,7 +312,7 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long b
   // sheets and fewer parts on 19 runs, more on none (3,194 -> 3,139), for 10-17% more CPU. Then patches
   // grown over the surface, last because they have the most parts: over `bench --layout` (up to 1,000
   // faces) 466 -> 448 sheets, 18 runs a sheet fewer, none more, the same CPU (the bound is reached
-  // sooner); 466 -> 460 with the labels' veto (keep_patches_only_if_legible), and 2,758 -> 2,603 parts
+  // sooner); 466 -> 459 with the labels' veto (keep_patches_only_if_legible), and 2,758 -> 2,621 parts
   // where patches tie on sheets with fewer parts. Large meshes stop before them.
   constexpr Try tries[] = {{1.0, unfold::PartGrowth::Round, 0},
                            {0.7, unfold::PartGrowth::Tree, 0},

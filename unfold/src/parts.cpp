@@ -327,7 +327,7 @@ class AcrossParts {
  private:
   static constexpr int kPasses = 4;
   // A side larger than this is not moved: the move is a local correction of a boundary, not a repartition.
-  static constexpr int kMostFacesMoved = 12;
+  static constexpr int kMostFacesMoved = 40;
 
   bool between_parts(EdgeId c) const {
     const auto& edge = m_.edge(c);
