@@ -79,6 +79,14 @@ LayoutOptions on_a1_at_size(double size_mm) {
   return o;
 }
 
+// Tabs planned as if there were no labels, and none taken for them after packing.
+LayoutOptions with_plain_tabs(LayoutOptions o) {
+  o.tabs_for_labels = false;
+  o.tab_sides_for_labels = false;
+  o.label_tabs_in_place = false;
+  return o;
+}
+
 // A piece's true body on its sheet (y down): its flat triangles through the reported placement.
 std::vector<Polygon> piece_body(const unfold::Unfolding& u, const LayoutResult& r, int piece) {
   std::vector<Polygon> triangles;
@@ -554,8 +562,7 @@ TEST(Layout, WithoutTabsForLabelsTheTabsAreThoseOfALayoutWithoutNumbers) {
   const auto& ex = test::unfolded_example("penguin_500.obj");
   LayoutOptions o = on_a1_at_size(150);
   const LayoutResult with = layout_sheets(ex.unfolding, o);
-  o.tabs_for_labels = false;
-  o.tab_sides_for_labels = false;
+  o = with_plain_tabs(o);
   const LayoutResult plain = layout_sheets(ex.unfolding, o);
   o.numbers = false;
   const LayoutResult unnumbered = layout_sheets(ex.unfolding, o);
@@ -563,6 +570,48 @@ TEST(Layout, WithoutTabsForLabelsTheTabsAreThoseOfALayoutWithoutNumbers) {
   EXPECT_EQ(plain.overall.tabs, unnumbered.overall.tabs);
   EXPECT_NE(with.overall.tab_area_mm2, plain.overall.tab_area_mm2) << "labels move and grow some tabs";
   EXPECT_GT(plain.overall.labels, 0);
+}
+
+// Packed with plain tabs (the part chooser's last resort), the sheets still take the tabs planned for
+// the labels wherever they have room: the same sheets and placements, fewer labels crossing a line or
+// touching another, no seam without its tab, and every part with its tabs the packing's spacing from
+// every other.
+TEST(Layout, PackedWithPlainTabsTheLabelsStillTakeTabsWhereTheSheetsHaveRoomForThem) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  LayoutOptions o = with_plain_tabs(at_size(150));
+  o.furniture = false;  // a sheet without its scale square is packed again (keep_corner_for_square)
+  const LayoutResult plain = layout_sheets(ex.unfolding, o);
+  o.label_tabs_in_place = true;
+  const LayoutResult in_place = layout_sheets(ex.unfolding, o);
+  ASSERT_EQ(in_place.sheets.size(), plain.sheets.size());
+  for (std::size_t p = 0; p < plain.placements.size(); ++p) {
+    EXPECT_EQ(in_place.placements[p].sheet, plain.placements[p].sheet);
+    EXPECT_EQ(in_place.placements[p].offset_mm, plain.placements[p].offset_mm);
+  }
+  const auto unclear = [](const LayoutResult& r) {
+    return r.label_audit.crossing_lines + r.label_audit.touching;
+  };
+  EXPECT_LT(unclear(in_place), 0.8 * unclear(plain)) << unclear(in_place) << " against " << unclear(plain);
+  EXPECT_GT(in_place.overall.tab_area_mm2, plain.overall.tab_area_mm2);
+  EXPECT_LE(in_place.overall.dropped_tabs, plain.overall.dropped_tabs);
+  EXPECT_EQ(in_place.overall.tabs - in_place.overall.split_tabs + in_place.overall.dropped_tabs,
+            ex.unfolding.seam_count());
+  const double spacing_mm = o.pack.spacing_mm;
+  for (const Sheet& sheet : in_place.sheets) {
+    std::map<int, std::vector<Polygon>> shape_of;
+    for (const Path& path : sheet.paths)
+      if ((path.role == PathRole::Cut || path.role == PathRole::Tab) && path.piece >= 0)
+        shape_of[path.piece].push_back(as_ccw(path).front());
+    for (const auto& [a, shape_a] : shape_of) {
+      // A hair under the spacing: the test's own offset is rounded.
+      const std::vector<Polygon> near_a = polygon_offset(shape_a, spacing_mm - 0.05);
+      for (const auto& [b, shape_b] : shape_of) {
+        if (b <= a) continue;
+        ASSERT_LT(intersection_area(near_a, shape_b), 1e-4)
+            << "parts " << a << " and " << b << " closer than the spacing";
+      }
+    }
+  }
 }
 
 TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {

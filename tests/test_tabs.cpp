@@ -10,6 +10,7 @@
 #include "foldkit/layout/tabs.hpp"
 #include "foldkit/unfold/parts.hpp"
 #include "layout_fixtures.hpp"
+#include "zipper_fixture.hpp"
 
 using namespace foldkit;
 using namespace foldkit::layout;
@@ -93,39 +94,8 @@ TEST(Tabs, NeighbouringSeamsAlongAnOutlineAlternateSides) {
     EXPECT_NE(tabs_on_edge[i], tabs_on_edge[(i + 1) % n]) << "outline edges " << i << " and " << (i + 1) % n;
 }
 
-// Two 30 x 10 mm pieces zipped together along three seams: the bottom of `a` (edges 0, 1, 2, left to
-// right) is glued to the top of `b` (edges 4, 3, 2). sides[0] of every seam is on `a`, so a plan that
-// ignored alternation would put all three tabs there, side by side.
-struct Zipper {
-  std::vector<ScaledPiece> pieces;
-  std::vector<Seam> seams;
-};
-
-Zipper two_pieces_zipped_along_three_seams() {
-  auto piece = [](int index, std::vector<Vec2> corners) {
-    ScaledPiece p;
-    p.index = index;
-    p.faces = {2 * index, 2 * index + 1};
-    p.triangles_mm = {Triangle2{Vec2{0, 0}, Vec2{30, 0}, Vec2{30, 10}},
-                      Triangle2{Vec2{0, 0}, Vec2{30, 10}, Vec2{0, 10}}};
-    OutlineLoop loop;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      loop.push_back({static_cast<int>(loop.size()), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
-    p.outline_mm = {loop};
-    p.area_mm2 = 300;
-    return p;
-  };
-  Zipper z;
-  z.pieces.push_back(piece(0, {{0, 0}, {10, 0}, {20, 0}, {30, 0}, {30, 10}, {0, 10}}));
-  z.pieces.push_back(piece(1, {{0, 0}, {30, 0}, {30, 10}, {20, 10}, {10, 10}, {0, 10}}));
-  for (int k = 0; k < 3; ++k) {
-    Seam seam;
-    seam.edge = k;
-    seam.sides = {SeamSide{0, 0, k}, SeamSide{1, 0, 4 - k}};
-    z.seams.push_back(seam);
-  }
-  return z;
-}
+using test::two_pieces_zipped_along_three_seams;
+using test::Zipper;
 
 TEST(Tabs, AlongAZipperBetweenTwoPiecesTheTabsChangeSidesFromSeamToSeam) {
   const Zipper z = two_pieces_zipped_along_three_seams();

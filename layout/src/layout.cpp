@@ -22,6 +22,7 @@
 #include "foldkit/layout/piece_letters.hpp"
 #include "foldkit/layout/scale.hpp"
 #include "foldkit/layout/tabs.hpp"
+#include "foldkit/layout/tabs_in_place.hpp"
 #include "foldkit/unfold/disjoint_sets.hpp"
 
 namespace foldkit::layout {
@@ -310,6 +311,29 @@ void split_tabs_for_crowded_labels(Draft& d, const LayoutOptions& o) {
   if (want_split_tabs(d, o, wanted)) keep_tabs_if_labels_gain(d, o, std::move(wanted));
 }
 
+// The draft's tabs as `o` asks: for its labels (tab_sides_for_labels) or as if there were none.
+void plan_tabs_of_draft(Draft& d, const LayoutOptions& o) {
+  d.tab_sides.clear();
+  if (!o.tabs) {
+    d.tabs = TabPlan{};
+    d.tabs.tab_of_seam.resize(d.seams.size());
+    return;
+  }
+  if (o.numbers && o.tab_sides_for_labels) d.tab_sides = tab_sides_wanted(d, o);
+  d.tabs = plan_draft_tabs(d, o, d.tab_sides);
+}
+
+// The labels of a drawn draft, and the tabs that open for those without a clear spot. The sheets are
+// not known yet: the labels are placed without the mate's sheet, and placed again where packing puts a
+// mate on another sheet (settle_labels).
+void label_draft(Draft& d, const LayoutOptions& o) {
+  d.labels = place_draft_labels(d, seam_texts(d));
+  if (o.tabs && o.tabs_for_labels) {
+    open_tabs_for_crowded_labels(d, o);
+    if (o.split_tabs_for_labels) split_tabs_for_crowded_labels(d, o);
+  }
+}
+
 Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double scale) {
   constexpr long kSteps = 5;  // pieces, seams, folds, tabs, letters and labels
   report(o, "drawing", 0, kSteps);
@@ -326,12 +350,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
     d.folds.push_back(fold_lines(u, p, o.fold));
   report(o, "drawing", 3, kSteps);
 
-  if (o.tabs) {
-    if (o.tab_sides_for_labels) d.tab_sides = tab_sides_wanted(d, o);
-    d.tabs = plan_draft_tabs(d, o, d.tab_sides);
-  } else {
-    d.tabs.tab_of_seam.resize(d.seams.size());
-  }
+  plan_tabs_of_draft(d, o);
   if (o.arrows) d.arrows = seam_arrows(d.pieces, d.seams);
 
   report(o, "drawing", 4, kSteps);
@@ -365,13 +384,7 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
       }
     }
     d.label_options = label_options_in_use(o);
-    // The sheets are not known yet: the labels are placed without the mate's sheet, and placed again
-    // where packing puts a mate on another sheet (settle_labels).
-    d.labels = place_draft_labels(d, seam_texts(d));
-    if (o.tabs && o.tabs_for_labels) {
-      open_tabs_for_crowded_labels(d, o);
-      if (o.split_tabs_for_labels) split_tabs_for_crowded_labels(d, o);
-    }
+    label_draft(d, o);
   }
   report(o, "drawing", kSteps, kSteps);
   return d;
@@ -730,6 +743,79 @@ Packing pack_draft(const Draft& d, const LayoutOptions& o, const Box2& area, std
   return k;
 }
 
+// Per piece, the convex shapes packing kept apart besides its tabs: its triangles and the labels that
+// stick out of tiny faces (pack_items_of).
+std::vector<std::vector<Polygon>> piece_bodies(const Draft& d) {
+  std::vector<std::vector<Polygon>> bodies(d.pieces.size());
+  for (std::size_t p = 0; p < d.pieces.size(); ++p)
+    for (const Triangle2& t : d.pieces[p].triangles_mm)
+      bodies[p].push_back({t[0], t[1], t[2]});
+  for (const Label& label : d.labels)
+    if (label.crowded) bodies[label.piece].push_back(label.box_mm);
+  return bodies;
+}
+
+// The labels of the pieces `changed` marks that stick out of their tiny faces, each with its piece.
+std::vector<std::pair<int, Polygon>> crowded_labels_of(const Draft& d, const std::vector<bool>& changed) {
+  std::vector<std::pair<int, Polygon>> boxes;
+  for (const Label& l : d.labels)
+    if (l.crowded && changed[l.piece]) boxes.emplace_back(l.piece, l.box_mm);
+  return boxes;
+}
+
+// A draft packed with plainer tabs than its labels want (the part chooser's layout again with fewer
+// tabs for labels, when those cost a sheet) takes the tabs planned for its labels seam by seam wherever
+// the packed sheets have room for them (tabs_in_place), and its labels placed again; kept when fewer
+// labels are left without a clear spot. No piece moves; the packed shapes grow by the tabs taken.
+void take_label_tabs_in_place(Draft& d, const LayoutOptions& o, Packing& k) {
+  if (!o.label_tabs_in_place || !o.numbers || !o.tabs || labels_without_clear_spot(d.labels) == 0) return;
+  if (o.tab_sides_for_labels && o.tabs_for_labels && o.split_tabs_for_labels) return;
+  LayoutOptions full = o;
+  full.tab_sides_for_labels = full.tabs_for_labels = full.split_tabs_for_labels = true;
+  Draft wanted = d;
+  plan_tabs_of_draft(wanted, full);
+  label_draft(wanted, full);
+  std::vector<std::pair<int, Polygon>> others;
+  for (std::size_t i = k.piece_items; i < k.items.size(); ++i) {
+    const PackPlacement& at = k.packed.placements[i];
+    for (const Polygon& shape : k.items[i].shape_mm) {
+      Polygon placed;
+      for (Vec2 v : shape)
+        placed.push_back(at.transform.apply(v));
+      others.emplace_back(at.sheet, std::move(placed));
+    }
+  }
+  const PackOptions packing = pack_options_in_use(o, packing_area(o), std::nullopt);
+  const auto room_with = [&](const std::vector<std::vector<Polygon>>& bodies) {
+    return PackedRoom{std::span(k.packed.placements).first(k.piece_items),
+                      bodies,
+                      others,
+                      packing.area_mm,
+                      packing.keep_out_mm,
+                      packing.spacing_mm};
+  };
+  TabPlan kept =
+      std::exchange(d.tabs, tabs_in_place(d.seams, d.tabs, wanted.tabs, room_with(piece_bodies(d))));
+  const std::vector<bool> changed = pieces_with_other_tabs(d, kept, d.tabs);
+  std::vector<Label> again = place_draft_labels_again(d, seam_texts(d), d.labels, changed);
+  std::swap(again, d.labels);
+  if (labels_without_clear_spot(d.labels) >= labels_without_clear_spot(again) ||
+      !clear_in_place(crowded_labels_of(d, changed), d.seams, d.tabs, room_with(piece_bodies(d)))) {
+    d.labels = std::move(again);
+    d.tabs = std::move(kept);
+    return;
+  }
+  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
+    if (!changed[p]) continue;
+    std::vector<Polygon> shape = k.items[p].shape_mm;
+    for (const Tab* tab : d.tabs.all())
+      if (tab->piece == static_cast<int>(p)) shape.push_back(tab->quad_mm);
+    for (const Label& label : d.labels)
+      if (label.piece == static_cast<int>(p) && label.crowded) shape.push_back(label.box_mm);
+    k.items[p].shape_mm = polygon_union(shape);
+  }
+}
+
 // The refusal when a piece fits no sheet at the asked size, naming the largest size that fits.
 LayoutError piece_too_large(const unfold::Unfolding& u, const LayoutOptions& o, int piece, double size_mm) {
   const Box2 area = packing_area(o);
@@ -1085,12 +1171,13 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
   if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
     throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
                       " pieces, before packing them");
-  const Packing k = pack_draft(d, o, packing_area(o), max_sheets);
+  Packing k = pack_draft(d, o, packing_area(o), max_sheets);
   if (!k.packed.unplaced.empty()) {
     if (!max_sheets) throw piece_too_large(u, o, k.packed.unplaced.front(), r.size_mm);
     return attempt;
   }
   attempt.complete = true;
+  take_label_tabs_in_place(d, o, k);
   std::optional<Draft> drawn;
   if (o.furniture) drawn = d;  // emitting settles the letters and labels on the draft
   std::vector<int> without_square = emit_sheets(u, o, d, k, r);
