@@ -19,6 +19,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "json_report.hpp"
+#include "pipeline.hpp"
 #include "print_cuts.hpp"
 
 namespace foldkit::cli {
@@ -50,8 +51,8 @@ std::vector<fs::path> mesh_files(const fs::path& corpus) {
   return files;
 }
 
-Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout::LayoutOptions o,
-            const unfold::PartOptions& parts) {
+// What `make` does with one unfolding at one size: the parts chosen and laid out (choose_and_note_parts).
+Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
   Row row;
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
@@ -60,18 +61,18 @@ Row run_one(const unfold::Mesh& mesh, const unfold::Unfolding& unfolding, layout
     row.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   };
   try {
-    const ChosenParts chosen = choose_parts(mesh, unfolding, o, parts);
-    const layout::LayoutResult r =
-        chosen.layout ? *chosen.layout : layout::layout_sheets(chosen.unfolding, o);
+    std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(run, o);
+    const unfold::Unfolding& chosen = run.result.unfolding;
+    const layout::LayoutResult r = laid_out ? std::move(*laid_out) : layout::layout_sheets(chosen, o);
     stop();
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
     row.bound = std::max(1L, static_cast<long>(std::ceil(used / (area.width() * area.height()) - 1e-9)));
-    row.shape_bound = layout::shape_sheet_bound(
-        flat_face_cores_mm(chosen.unfolding, *o.size_mm / unfolding.model_extent), area);
-    row.parts = chosen.unfolding.piece_count;
-    row.seams = chosen.unfolding.seam_count();
+    row.shape_bound =
+        layout::shape_sheet_bound(flat_face_cores_mm(chosen, *o.size_mm / chosen.model_extent), area);
+    row.parts = chosen.piece_count;
+    row.seams = chosen.seam_count();
     row.no_tab = r.overall.dropped_tabs;
     row.coverage = r.overall.coverage;
   } catch (const Error& e) {
@@ -118,8 +119,9 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
     unfold::UnfoldOptions uo;
     uo.time_limit_s = a.time_limit_s;
     uo.cuts = cuts_for_print(loaded.mesh, o, uo.cuts);
-    const unfold::UnfoldResult unfolded = unfold::unfold_mesh(loaded.mesh, uo);
-    Row row = run_one(loaded.mesh, unfolded.unfolding, o, part_options_of(loaded.mesh, uo));
+    // The unfolding is timed apart (`bench`), the choice of parts with its layouts here, as make runs it.
+    UnfoldRun run{loaded, unfold::unfold_mesh(loaded.mesh, uo), uo};
+    Row row = run_one(std::move(run), o);
     row.mesh = name;
     row.faces = loaded.mesh.num_faces();
     row.size_mm = size;

@@ -375,29 +375,25 @@ Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate>& candida
   return best;
 }
 
-// Labels crossing a line or touching another.
-int labels_unclear(const layout::LayoutResult& r) {
-  return r.label_audit.crossing_lines + r.label_audit.touching;
-}
-
 // Patches save sheets where a net's parts do not fill them, but their seams between parts run through
 // regions of small faces too, and packed that densely their tabs have no room to grow for labels: over
 // `bench/label_sweep.py` they left 1,115 labels of 17,848 unclear against 889 of 17,678. A sheet is
 // worth a few more unclear labels, not many: patches are kept when their labels crossing lines or
-// touching are at most kLegibleShare of their labels (legible as issue 12 counts it), or at most
+// touching are at most kLegibleLabelShare of their labels (legible as issue 12 counts it), or at most
 // kPatchLabelShare of them more than the best partition cut from the net leaves (laid out here if it
 // was not).
 void keep_patches_only_if_legible(PartChooser& chooser, std::vector<Candidate>& others, Candidate& best) {
-  constexpr double kLegibleShare = 0.02;
+  constexpr double kLegibleLabelShare = 0.02;  // issue 12's bar
   constexpr double kPatchLabelShare = 0.01;
   if (!best.patches || !best.layout) return;
   const int labels = best.layout->label_audit.labels;
-  if (labels_unclear(*best.layout) <= static_cast<int>(std::floor(kLegibleShare * labels))) return;
+  if (best.layout->label_audit.unclear() <= static_cast<int>(std::floor(kLegibleLabelShare * labels))) return;
   auto net = std::find_if(others.begin(), others.end(), [](const Candidate& c) { return !c.patches; });
   if (net == others.end()) return;  // ranked: the first cut from the net is its best
   if (!net->layout) chooser.lay_out(*net);
-  const int allowed = labels_unclear(*net->layout) + static_cast<int>(std::floor(kPatchLabelShare * labels));
-  if (labels_unclear(*best.layout) <= allowed) return;
+  const int allowed =
+      net->layout->label_audit.unclear() + static_cast<int>(std::floor(kPatchLabelShare * labels));
+  if (best.layout->label_audit.unclear() <= allowed) return;
   std::swap(best, *net);
 }
 
@@ -435,7 +431,7 @@ void close_slits_across_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
   c.estimated_sheets = best.estimated_sheets;
   chooser.lay_out(c);
   if (c.sheets <= best.sheets && c.layout->overall.dropped_tabs < best.layout->overall.dropped_tabs &&
-      labels_unclear(*c.layout) <= labels_unclear(*best.layout))
+      c.layout->label_audit.unclear() <= best.layout->label_audit.unclear())
     best = std::move(c);
 }
 
@@ -484,7 +480,8 @@ void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions
   // The estimate packs no tabs grown for labels: where the joined parts fill the sheet, the full layout
   // falls back to plain tabs and leaves more labels unclear (label sweep 923 -> 1,024 of 17,700 without
   // this check; docs/layout.md).
-  if (kept->sheets <= best.sheets && labels_unclear(*kept->layout) <= labels_unclear(*best.layout) &&
+  if (kept->sheets <= best.sheets &&
+      kept->layout->label_audit.unclear() <= best.layout->label_audit.unclear() &&
       kept->layout->overall.dropped_tabs <= best.layout->overall.dropped_tabs)
     best = std::move(*kept);
 }

@@ -16,6 +16,8 @@ struct LabelAudit {
   int letters_crossing_lines = 0;  ///< part letters whose box crosses a cut or fold line
   /// Adds another sheet's counts.
   LabelAudit& operator+=(const LabelAudit& other);
+  /// Labels a builder may misread: crossing a line or touching another text (issue 12's count).
+  int unclear() const { return crossing_lines + touching; }
 };
 
 /// The audit of one sheet. Text boxes are the cap-height boxes of the widths layout reserves.

@@ -1,0 +1,69 @@
+// The pipeline's choice above unfold and layout: where the parts chosen from the default unfolding
+// leave labels unclear, the mesh is unfolded again with seams where labels have room, and the better
+// of the two prints.
+#include <gtest/gtest.h>
+
+#include <utility>
+
+#include "choose_parts.hpp"
+#include "foldkit/layout/layout.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
+#include "pipeline.hpp"
+#include "print_cuts.hpp"
+#include "test_paths.hpp"
+
+using namespace foldkit;
+
+namespace {
+
+layout::LayoutOptions at_150_mm() {
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  return o;
+}
+
+// A mesh unfolded as `make` unfolds it at the size of `o` (cuts_for_print), one thread.
+cli::UnfoldRun unfolded_for_print(const std::string& name, const layout::LayoutOptions& o) {
+  cli::UnfoldRun run;
+  run.loaded = unfold::load_mesh(test::example_mesh(name));
+  run.options.threads = 1;
+  run.options.cuts = cli::cuts_for_print(run.loaded.mesh, o, run.options.cuts);
+  run.result = unfold::unfold_mesh(run.loaded.mesh, run.options);
+  return run;
+}
+
+// The layout of the parts chosen from the run's own unfolding, and nothing else tried.
+layout::LayoutResult first_choice(const cli::UnfoldRun& run, const layout::LayoutOptions& o) {
+  cli::ChosenParts parts = cli::choose_parts(run.loaded.mesh, run.result.unfolding, o,
+                                             cli::part_options_of(run.loaded.mesh, run.options));
+  return parts.layout ? std::move(*parts.layout) : layout::layout_sheets(parts.unfolding, o);
+}
+
+}  // namespace
+
+TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptWhenItReadsBetter) {
+  const layout::LayoutOptions o = at_150_mm();
+  cli::UnfoldRun run = unfolded_for_print("fish_350.obj", o);
+  const layout::LayoutResult first = first_choice(run, o);
+  ASSERT_GT(first.label_audit.unclear(), cli::kClearLabelShare * first.label_audit.labels)
+      << "fish_350 at 150 mm leaves some of its labels unclear";
+  const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
+  ASSERT_TRUE(chosen.has_value());
+  EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Balanced) << "the second unfolding printed";
+  EXPECT_LE(chosen->sheets.size(), first.sheets.size());
+  EXPECT_LT(chosen->label_audit.unclear(), first.label_audit.unclear());
+  EXPECT_EQ(run.result.unfolding.piece_count, chosen->placements.size())
+      << "the parts laid out are the run's";
+}
+
+TEST(Pipeline, LegibleLabelsKeepTheDefaultUnfolding) {
+  const layout::LayoutOptions o = at_150_mm();
+  cli::UnfoldRun run = unfolded_for_print("bob_350.obj", o);
+  const layout::LayoutResult first = first_choice(run, o);
+  ASSERT_LE(first.label_audit.unclear(), cli::kClearLabelShare * first.label_audit.labels);
+  const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
+  EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Short);
+  ASSERT_TRUE(chosen.has_value());
+  EXPECT_EQ(chosen->sheets.size(), first.sheets.size());
+  EXPECT_EQ(chosen->label_audit.unclear(), first.label_audit.unclear());
+}
