@@ -23,6 +23,14 @@ constexpr double kUnfoldShareOfTimeLimit = 0.75;
 // there at 150 mm most labels need a larger size anyway (the remedy says which).
 constexpr int kMostFacesForSeamsWithRoom = 500;
 
+// What a builder stumbles on, counted alike: labels that may be misread (crossing a line or touching
+// another) and seams without a glue tab. Judged on labels alone the second unfolding traded 54 fewer
+// unclear labels for 5 more seams without a tab (882 -> 828, 208 -> 213 over the label sweep's meshes);
+// judged on both, fewer of each (docs/unfolding.md).
+int flaws(const layout::LayoutResult& r) {
+  return r.label_audit.unclear() + r.overall.dropped_tabs;
+}
+
 void note_parts(unfold::UnfoldResult& result, const ChosenParts& parts) {
   if (parts.patches)
     result.notes.push_back(std::to_string(parts.split_pieces) +
@@ -49,8 +57,7 @@ bool may_try_seams_with_room(const UnfoldRun& run, const layout::LayoutOptions& 
 // The options of the second unfolding: short seams still, but the edges too tight for labels folded
 // first, and ties between equally good moves broken towards the preferred cut (docs/unfolding.md, "Seams
 // with room"). Over the 350-500-face meshes at 150 mm neither way wins everywhere: 882 against 950
-// labels unclear in all (bench/label_sweep.py), 828 where the second is tried beyond kClearLabelShare
-// and kept when better, on the same sheets.
+// labels unclear in all (bench/label_sweep.py), and 208 against 171 seams without a tab.
 unfold::UnfoldOptions seams_with_room(unfold::UnfoldOptions options, const layout::LayoutOptions& o) {
   options.cuts.prefer = unfold::SeamPreference::Balanced;
   options.search.prefer_weighted_ties = true;
@@ -70,15 +77,15 @@ ChosenParts choose_and_lay_out(const unfold::Mesh& mesh, const unfold::Unfolding
   return parts;
 }
 
-// Where the chosen layout leaves more than kClearLabelShare of its labels unclear, the mesh is unfolded
-// again with seams where labels have room and its parts chosen again; that choice replaces the first
-// when it takes fewer sheets, or as many with fewer labels unclear. Either way a full choice of parts:
-// only their layouts tell. Past the time limit the first stands.
+// Where the chosen layout has more flaws than kFewFlawsShare of its labels, the mesh is unfolded again
+// with seams where labels have room and its parts chosen again; that choice replaces the first when it
+// takes fewer sheets, or as many with fewer flaws. Either way a full choice of parts: only their layouts
+// tell. Past the time limit the first stands.
 void try_seams_with_room(UnfoldRun& run, const layout::LayoutOptions& o, ChosenParts& parts) {
   const unfold::Mesh& mesh = run.loaded.mesh;
   if (!parts.layout) parts.layout = layout::layout_sheets(parts.unfolding, o);
   const layout::LayoutResult& first = *parts.layout;
-  if (first.label_audit.unclear() <= static_cast<int>(kClearLabelShare * first.label_audit.labels)) return;
+  if (flaws(first) <= static_cast<int>(kFewFlawsShare * first.label_audit.labels)) return;
   const unfold::UnfoldOptions options = seams_with_room(run.options, o);
   layout::LayoutOptions again = o;
   if (o.progress)
@@ -88,9 +95,7 @@ void try_seams_with_room(UnfoldRun& run, const layout::LayoutOptions& o, ChosenP
   try {
     unfold::UnfoldResult result = unfold::unfold_mesh(mesh, options);
     ChosenParts second = choose_and_lay_out(mesh, result.unfolding, again, options);
-    const auto rank = [](const layout::LayoutResult& r) {
-      return std::pair(r.sheets.size(), r.label_audit.unclear());
-    };
+    const auto rank = [](const layout::LayoutResult& r) { return std::pair(r.sheets.size(), flaws(r)); };
     if (rank(*second.layout) >= rank(first)) return;
     run.result = std::move(result);
     run.options = options;

@@ -16,17 +16,18 @@ struct PipelineRun {
   double layout_seconds = 0;
 };
 
-/// A layout leaving at most this share of its labels unclear (crossing a line or touching another) is
-/// clear enough; beyond it, choose_and_note_parts tries a second unfolding (a threshold of 2%, issue
-/// 12's bar, left 850 labels unclear where 0.5% leaves 828, for a fifth more time).
-inline constexpr double kClearLabelShare = 0.005;
+/// A layout whose labels left unclear (crossing a line or touching another) and seams without a glue tab
+/// add up to at most this share of its labels is left as it is; beyond it, choose_and_note_parts tries a
+/// second unfolding.
+inline constexpr double kFewFlawsShare = 0.005;
 
 /// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
-/// any split in result.notes. What `make` lays out and `unfold --size` writes. Where those parts leave
-/// more than kClearLabelShare of their labels unclear (meshes up to 500 faces at a fixed size), the mesh
-/// is unfolded again with seams where labels have room (SeamPreference::Balanced) and that choice is kept
-/// when it takes fewer sheets, or as many with fewer labels unclear: run.result and run.options are then
-/// the second unfolding's. Returns the layout of those parts when the choice made one.
+/// any split in result.notes. What `make` lays out and `unfold --size` writes. Where those parts have
+/// more flaws than kFewFlawsShare allows (meshes up to 500 faces at a fixed size), the mesh is unfolded
+/// again with seams where labels have room (SeamPreference::Balanced) and that choice is kept when it
+/// takes fewer sheets, or as many with fewer labels unclear and seams without a tab in all: run.result
+/// and run.options are then the second unfolding's. Returns the layout of those parts when the choice
+/// made one.
 std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
                                                           const layout::LayoutOptions& layout_options);
 
