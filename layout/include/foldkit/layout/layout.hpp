@@ -62,7 +62,8 @@ struct LayoutOptions {
   /// spot on its face gets its tab split in two halves, one on each side, each holding its side's label.
   bool split_tabs_for_labels = true;
   /// Where any of the three above is off (tabs for labels cost a sheet), the packed sheets still take the
-  /// tabs they would plan, seam by seam, wherever there is room for them (tabs_in_place.hpp).
+  /// tabs they would plan, seam by seam, wherever there is room for them (tabs_in_place.hpp); on meshes
+  /// up to 1,500 faces (above, the second drawing it takes would cost too much of a layout's time).
   bool label_tabs_in_place = true;
   /// Tab width and shape; a min_width_mm above width_mm counts as width_mm.
   TabOptions tab;
