@@ -390,20 +390,31 @@ Draft draw_pieces(const unfold::Unfolding& u, const LayoutOptions& o, double sca
   return d;
 }
 
-// The shape packing keeps apart: each piece with its tabs.
+// Per piece, the convex shapes packing keeps apart besides its tabs: its triangles and the labels
+// squeezed onto tiny faces that stick out of them (they must still stay clear of the neighbours and
+// inside the printable area).
+std::vector<std::vector<Polygon>> piece_bodies(const Draft& d) {
+  std::vector<std::vector<Polygon>> bodies(d.pieces.size());
+  for (std::size_t p = 0; p < d.pieces.size(); ++p)
+    for (const Triangle2& t : d.pieces[p].triangles_mm)
+      bodies[p].push_back({t[0], t[1], t[2]});
+  for (const Label& label : d.labels)
+    if (label.crowded) bodies[label.piece].push_back(label.box_mm);
+  return bodies;
+}
+
+// The outline packing keeps apart for piece p: its body with its tabs.
+std::vector<Polygon> packed_shape(const Draft& d, std::size_t p, std::vector<Polygon> body) {
+  for (const Tab* tab : d.tabs.all())
+    if (tab->piece == static_cast<int>(p)) body.push_back(tab->quad_mm);
+  return polygon_union(body);
+}
+
 std::vector<PackItem> pack_items_of(const Draft& d, Vec2 room) {
+  std::vector<std::vector<Polygon>> bodies = piece_bodies(d);
   std::vector<PackItem> items(d.pieces.size());
   for (std::size_t p = 0; p < d.pieces.size(); ++p) {
-    std::vector<Polygon> parts;
-    for (const Triangle2& t : d.pieces[p].triangles_mm)
-      parts.push_back({t[0], t[1], t[2]});
-    for (const Tab* tab : d.tabs.all())
-      if (tab->piece == static_cast<int>(p)) parts.push_back(tab->quad_mm);
-    // A label squeezed onto a tiny face may stick out of it: it must still stay clear of the
-    // neighbours and inside the printable area.
-    for (const Label& label : d.labels)
-      if (label.piece == static_cast<int>(p) && label.crowded) parts.push_back(label.box_mm);
-    items[p].shape_mm = polygon_union(parts);
+    items[p].shape_mm = packed_shape(d, p, std::move(bodies[p]));
     std::vector<Vec2> points;
     for (const Polygon& poly : items[p].shape_mm)
       points.insert(points.end(), poly.begin(), poly.end());
@@ -743,18 +754,6 @@ Packing pack_draft(const Draft& d, const LayoutOptions& o, const Box2& area, std
   return k;
 }
 
-// Per piece, the convex shapes packing kept apart besides its tabs: its triangles and the labels that
-// stick out of tiny faces (pack_items_of).
-std::vector<std::vector<Polygon>> piece_bodies(const Draft& d) {
-  std::vector<std::vector<Polygon>> bodies(d.pieces.size());
-  for (std::size_t p = 0; p < d.pieces.size(); ++p)
-    for (const Triangle2& t : d.pieces[p].triangles_mm)
-      bodies[p].push_back({t[0], t[1], t[2]});
-  for (const Label& label : d.labels)
-    if (label.crowded) bodies[label.piece].push_back(label.box_mm);
-  return bodies;
-}
-
 // The labels of the pieces `changed` marks that stick out of their tiny faces, each with its piece.
 std::vector<std::pair<int, Polygon>> crowded_labels_of(const Draft& d, const std::vector<bool>& changed) {
   std::vector<std::pair<int, Polygon>> boxes;
@@ -782,12 +781,8 @@ void take_label_tabs_in_place(const unfold::Unfolding& u, Draft& d, const Layout
   std::vector<std::pair<int, Polygon>> others;
   for (std::size_t i = k.piece_items; i < k.items.size(); ++i) {
     const PackPlacement& at = k.packed.placements[i];
-    for (const Polygon& shape : k.items[i].shape_mm) {
-      Polygon placed;
-      for (Vec2 v : shape)
-        placed.push_back(at.transform.apply(v));
-      others.emplace_back(at.sheet, std::move(placed));
-    }
+    for (const Polygon& shape : k.items[i].shape_mm)
+      others.emplace_back(at.sheet, at.transform.apply(shape));
   }
   const PackOptions packing = pack_options_in_use(o, packing_area(o), std::nullopt);
   const auto room_with = [&](const std::vector<std::vector<Polygon>>& bodies) {
@@ -809,15 +804,9 @@ void take_label_tabs_in_place(const unfold::Unfolding& u, Draft& d, const Layout
     d.tabs = std::move(kept);
     return;
   }
-  for (std::size_t p = 0; p < d.pieces.size(); ++p) {
-    if (!changed[p]) continue;
-    std::vector<Polygon> shape = k.items[p].shape_mm;
-    for (const Tab* tab : d.tabs.all())
-      if (tab->piece == static_cast<int>(p)) shape.push_back(tab->quad_mm);
-    for (const Label& label : d.labels)
-      if (label.piece == static_cast<int>(p) && label.crowded) shape.push_back(label.box_mm);
-    k.items[p].shape_mm = polygon_union(shape);
-  }
+  std::vector<std::vector<Polygon>> bodies = piece_bodies(d);
+  for (std::size_t p = 0; p < d.pieces.size(); ++p)
+    if (changed[p]) k.items[p].shape_mm = packed_shape(d, p, std::move(bodies[p]));
 }
 
 // The refusal when a piece fits no sheet at the asked size, naming the largest size that fits.

@@ -68,14 +68,6 @@ class PackedSheets {
   std::vector<Shape> shapes_;
 };
 
-Polygon placed_polygon(const Polygon& p, const Rigid2& t) {
-  Polygon out;
-  out.reserve(p.size());
-  for (Vec2 v : p)
-    out.push_back(t.apply(v));
-  return out;
-}
-
 // The tabs a plan gives seam s, by side (a split seam has both).
 std::array<const Tab*, 2> tabs_of(const TabPlan& plan, std::size_t s) {
   return {plan.on_side(s, 0), plan.on_side(s, 1)};
@@ -87,7 +79,7 @@ bool same_tab(const Tab* a, const Tab* b) {
 
 Shape tab_shape(const Tab& tab, const PackedRoom& room) {
   return {tab.piece, static_cast<int>(tab.seam.index()),
-          placed_polygon(tab.quad_mm, room.placements[tab.piece].transform)};
+          room.placements[tab.piece].transform.apply(tab.quad_mm)};
 }
 
 int sheet_count_of(std::span<const PackPlacement> placements,
@@ -107,7 +99,7 @@ PackedSheets index_room(std::span<const Seam> seams, const TabPlan& plan, const 
   for (std::size_t p = 0; p < room.placements.size(); ++p)
     for (const Polygon& body : room.bodies_mm[p])
       sheets.add(room.placements[p].sheet,
-                 {static_cast<int>(p), -1, placed_polygon(body, room.placements[p].transform)});
+                 {static_cast<int>(p), -1, room.placements[p].transform.apply(body)});
   for (const auto& [sheet, shape] : room.others_mm)
     sheets.add(sheet, {-1, -1, shape});
   tab_shapes.assign(seams.size(), {});
@@ -158,7 +150,7 @@ bool clear_in_place(std::span<const std::pair<int, Polygon>> shapes, std::span<c
   const PackedSheets sheets = index_room(seams, plan, room, tab_shapes);
   return std::all_of(shapes.begin(), shapes.end(), [&](const std::pair<int, Polygon>& shape) {
     const PackPlacement& at = room.placements[shape.first];
-    return sheets.holds(at.sheet, shape.first, -1, placed_polygon(shape.second, at.transform));
+    return sheets.holds(at.sheet, shape.first, -1, at.transform.apply(shape.second));
   });
 }
 

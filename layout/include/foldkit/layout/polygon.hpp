@@ -29,6 +29,14 @@ struct Rigid2 {
   Vec2 apply(Vec2 p) const { return rotated(p, angle_rad) + offset_mm; }
   /// Image of a direction (rotation only).
   Vec2 apply_dir(Vec2 d) const { return rotated(d, angle_rad); }
+  /// Image of a polygon, point by point.
+  Polygon apply(const Polygon& polygon) const {
+    Polygon out;
+    out.reserve(polygon.size());
+    for (Vec2 p : polygon)
+      out.push_back(apply(p));
+    return out;
+  }
 };
 
 /// The convex overlap test is foldkit::convex_overlap (geom/predicates.hpp), shared with the unfolding.
