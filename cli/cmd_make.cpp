@@ -47,6 +47,7 @@ nlohmann::json stats_json(const layout::SheetStats& s) {
           {"dropped_tab_count", s.dropped_tabs},
           {"split_tab_count", s.split_tabs},
           {"label_count", s.labels},
+          {"labels_with_leader_count", s.leaders},
           {"min_label_mm", s.min_label_mm},
           {"piece_area_mm2", s.piece_area_mm2},
           {"tab_area_mm2", s.tab_area_mm2}};

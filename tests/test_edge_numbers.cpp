@@ -231,6 +231,101 @@ TEST(EdgeNumbers, ALabelWithoutAClearSpotCoversAsFewTextsAsItCan) {
 }
 
 namespace {
+// A 2 mm glued base a-b under a tiny face (1.2 mm high) that opens into three large ones: a fan around
+// c, its four inner edges fold lines. Beside the base no label fits clear of them.
+struct TinyFaceInAFan {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+  std::vector<std::vector<FoldLine>> folds;
+};
+TinyFaceInAFan tiny_face_in_a_fan() {
+  const Vec2 a{0, 0}, b{2, 0}, c{1, 1.2}, d{5, 12}, e{-3, 12};
+  ScaledPiece piece;
+  piece.index = 0;
+  piece.faces = {0, 1, 2, 3};
+  piece.triangles_mm = {Triangle2{a, b, c}, Triangle2{b, d, c}, Triangle2{c, d, e}, Triangle2{a, c, e}};
+  piece.outline_mm = {{OutlineEdge{0, 0, 0, a, b}, OutlineEdge{1, 1, 0, b, d}, OutlineEdge{2, 2, 1, d, e},
+                       OutlineEdge{3, 3, 2, e, a}}};
+  for (const Triangle2& t : piece.triangles_mm)
+    piece.area_mm2 += std::fabs(signed_area(t));
+  Seam seam;
+  seam.edge = 0;
+  seam.sides = {SeamSide{0, 0, 0}, SeamSide{}};
+  std::vector<FoldLine> folds{FoldLine{PathRole::Valley, b, c, 4}, FoldLine{PathRole::Valley, c, d, 5},
+                              FoldLine{PathRole::Mountain, c, e, 6}, FoldLine{PathRole::Valley, a, c, 7}};
+  return {{piece}, {seam}, {folds}};
+}
+}  // namespace
+
+TEST(EdgeNumbers, ALabelWithNoRoomBesideItsEdgeStandsOffClearWithALeaderToTheEdgesMiddle) {
+  const auto [pieces, seams, folds] = tiny_face_in_a_fan();
+  const LabelOptions o;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_FALSE(l.crowded);
+  EXPECT_FALSE(l.over_fold);
+  EXPECT_DOUBLE_EQ(l.height_mm, o.min_mm);
+  for (const FoldLine& f : folds[0])
+    EXPECT_FALSE(convex_overlap(l.box_mm, std::array<Vec2, 2>{f.a, f.b}, -o.tight_clearance_mm));
+  const Vec2 middle = (l.box_mm[0] + l.box_mm[2]) * 0.5;
+  EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[2], middle, 0)) << "in the large face above the tiny one";
+  ASSERT_EQ(l.leader_mm.size(), 2u) << "a leader and its bar along the edge";
+  const std::array<Vec2, 2>& leader = l.leader_mm[0];
+  EXPECT_NEAR(norm(leader[0] - Vec2{1, o.gap_mm}), 0, 1e-9) << "starts just inside the base's middle";
+  double to_box = 1e300;
+  for (std::size_t i = 0; i < l.box_mm.size(); ++i) {
+    const Vec2 p = l.box_mm[i], q = l.box_mm[(i + 1) % l.box_mm.size()], d = q - p;
+    to_box =
+        std::min(to_box, norm(leader[1] - (p + d * std::clamp(dot(leader[1] - p, d) / dot(d, d), 0.0, 1.0))));
+  }
+  EXPECT_NEAR(to_box, o.clearance_mm, 1e-6) << "ends just short of the label";
+  EXPECT_LE(norm(leader[1] - leader[0]), o.leader_reach_mm);
+  const std::array<Vec2, 2>& bar = l.leader_mm[1];
+  EXPECT_NEAR(bar[0].y, o.gap_mm, 1e-9) << "the bar runs along the base";
+  EXPECT_NEAR(bar[1].y, o.gap_mm, 1e-9);
+  EXPECT_FALSE(convex_overlap(l.box_mm, leader, 0)) << "the leader does not run into its text";
+}
+
+TEST(EdgeNumbers, WithoutLeadersALabelWithNoRoomBesideItsEdgeCrossesAFoldThere) {
+  const auto [pieces, seams, folds] = tiny_face_in_a_fan();
+  LabelOptions o;
+  o.leader_reach_mm = 0;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  EXPECT_TRUE(labels.front().over_fold);
+  EXPECT_TRUE(labels.front().leader_mm.empty());
+}
+
+TEST(EdgeNumbers, ALeaderKeepsOffOtherLabelsAndTheirLeadersAndNeverLeavesThePiece) {
+  // Both sides of one seam on the tiny base, and a second seam on the large face's top edge d-e whose
+  // label sits above the leader's way: every label and leader stays inside the piece, apart.
+  auto [pieces, seams, folds] = tiny_face_in_a_fan();
+  Seam top;
+  top.edge = 2;
+  top.sides = {SeamSide{0, 0, 2}, SeamSide{}};
+  seams.push_back(top);
+  const LabelOptions o;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12, 13}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 2u);
+  ASSERT_EQ(labels[0].leader_mm.size(), 2u) << "the base's label still stands off";
+  std::vector<Polygon> shapes;
+  for (const Label& l : labels) {
+    EXPECT_FALSE(l.crowded) << l.text;
+    shapes.push_back(l.box_mm);
+    for (const std::array<Vec2, 2>& segment : l.leader_mm)
+      shapes.push_back(Polygon(segment.begin(), segment.end()));
+  }
+  for (const Polygon& shape : shapes)
+    for (const OutlineEdge& edge : pieces[0].outline_mm[0])
+      EXPECT_FALSE(convex_overlap(shape, std::array<Vec2, 2>{edge.a, edge.b}, -o.tight_clearance_mm));
+  const std::size_t first_of_second = 1 + labels[0].leader_mm.size();
+  for (std::size_t i = 0; i < first_of_second; ++i)
+    for (std::size_t j = first_of_second; j < shapes.size(); ++j)
+      EXPECT_FALSE(convex_overlap(shapes[i], shapes[j], -o.tight_clearance_mm)) << i << " " << j;
+}
+
+namespace {
 LayoutOptions spot_at_150() {
   LayoutOptions o;
   o.size_mm = 150;

@@ -185,9 +185,41 @@ TEST(Layout, EverySeamCarriesItsNumberOnBothSidesAndNumbersAreUnique) {
   }
 }
 
-TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
+namespace {
+
+// Distance from point p to segment ab.
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double u = dot(d, d) > 0 ? std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0) : 0.0;
+  return norm(p - (a + d * u));
+}
+
+// A seam label's box on the page (y down), descenders included: glyphs grow towards (sin, -cos).
+std::array<Vec2, 4> label_box_on_page(const Text& t) {
+  const Vec2 along{std::cos(t.angle_rad), std::sin(t.angle_rad)}, up{along.y, -along.x};
+  const double w = label_width_mm(t.text, t.height_mm, LabelOptions{});
+  const Vec2 foot = t.at_mm - up * label_descent_mm(t.text, t.height_mm);
+  const double h = t.height_mm + label_descent_mm(t.text, t.height_mm);
+  return {foot, foot + along * w, foot + along * w + up * h, foot + up * h};
+}
+
+double distance_to_box(Vec2 p, const std::array<Vec2, 4>& box) {
+  double d = 1e300;
+  for (std::size_t i = 0; i < 4; ++i)
+    d = std::min(d, distance_to_segment(p, box[i], box[(i + 1) % 4]));
+  return d;
+}
+
+}  // namespace
+
+// Beside its edge, or, where the faces leave no room there, a few millimetres away with a leader that
+// runs from the label to just inside the edge's middle.
+TEST(Layout, EachLabelSitsBesideTheEdgeItNamesOrLeadsToIt) {
+  // Beside: the label's middle this near the edge; a leader ends this near the label and the edge.
+  constexpr double kBeside_mm = 6, kLeaderEnd_mm = 0.5;
   const auto& ex = test::unfolded_example("spot_350.obj");
-  const LayoutResult r = layout_sheets(ex.unfolding, at_size(160));
+  const LayoutOptions o = at_size(160);
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
   // Where each numbered edge's two copies are on the sheets.
   std::map<SeamKey, std::vector<std::pair<int, std::array<Vec2, 2>>>> copies;
   for (std::size_t e = 0; e < ex.unfolding.edges.size(); ++e) {
@@ -204,20 +236,23 @@ TEST(Layout, EachLabelSitsBesideTheEdgeItNames) {
   for (std::size_t s = 0; s < r.sheets.size(); ++s)
     for (const Text& t : r.sheets[s].texts) {
       if (t.role != PathRole::Label) continue;
+      const std::array<Vec2, 4> box = label_box_on_page(t);
+      const Vec2 centre = (box[0] + box[2]) * 0.5;
       double nearest = 1e300;
-      // The middle of the label's box, descenders included (page frame, y down: glyphs grow towards
-      // (sin, -cos)).
-      const Vec2 along{std::cos(t.angle_rad), std::sin(t.angle_rad)}, up{along.y, -along.x};
-      const Vec2 centre = t.at_mm + along * (0.5 * label_width_mm(t.text, t.height_mm, LabelOptions{})) +
-                          up * (0.5 * (t.height_mm - label_descent_mm(t.text, t.height_mm)));
+      bool leads_to_edge = false;
       for (const auto& [sheet, ends] : copies[seam_key_of(r, t)]) {
         if (sheet != static_cast<int>(s)) continue;
-        // Distance from the label's middle to the edge segment.
-        const Vec2 d = ends[1] - ends[0];
-        const double u = std::clamp(dot(centre - ends[0], d) / dot(d, d), 0.0, 1.0);
-        nearest = std::min(nearest, norm(centre - (ends[0] + d * u)));
+        nearest = std::min(nearest, distance_to_segment(centre, ends[0], ends[1]));
+        for (const Path& p : r.sheets[s].paths) {
+          if (p.role != PathRole::Label || p.points_mm.size() != 2) continue;
+          const Vec2 from = p.points_mm[0], to = p.points_mm[1];
+          leads_to_edge =
+              leads_to_edge || (distance_to_box(to, box) < kLeaderEnd_mm + o.label.clearance_mm &&
+                                distance_to_segment(from, ends[0], ends[1]) < o.label.gap_mm + kLeaderEnd_mm);
+        }
       }
-      EXPECT_LT(nearest, 6.0) << "label " << t.text << " is far from its edge";
+      EXPECT_TRUE(nearest < kBeside_mm || leads_to_edge)
+          << "label " << t.text << " is " << nearest << " mm from its edge, with no leader";
     }
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <utility>
 
 #include "foldkit/layout/box_grid.hpp"
 #include "foldkit/layout/label_text.hpp"
@@ -24,8 +25,19 @@ constexpr double kShrinkStep = 0.85;
 // the least size) a little farther, since it stays close to its edge in absolute terms.
 constexpr double kSmallLabel = 1.2;
 constexpr double kHighestLiftSmall = 1.5, kHighestLift = 0.9;
-// The lifts tried between the edge and the highest, in label heights.
+// The lifts tried between the edge and the highest, in label heights (above the gap); the highest
+// last. Finer steps find the spot between a neighbour's label and the apex of a small face.
 constexpr double kMiddleLift = 0.4;
+constexpr std::array<double, 6> kLifts{0, 0.2, kMiddleLift, 0.65, kHighestLift, kHighestLiftSmall};
+constexpr std::array<double, 4> kCoarseLifts{0, kMiddleLift, kHighestLift, kHighestLiftSmall};
+// Across a needle's short edge: at the gap, and lifted by half a label height past a neighbour's label.
+constexpr std::array<double, 2> kAcrossLifts{0, 0.5};
+// A leader's spots: rings this far apart around the edge's middle, each tried in these directions
+// (turned from straight into the face, alternately either way); its bar along the edge this long, at
+// most this share of the edge.
+constexpr double kLeaderStep_mm = 1.0;
+constexpr std::array<double, 9> kLeaderTurns_rad{0, 0.5, -0.5, 1.0, -1.0, 1.57, -1.57, 2.1, -2.1};
+constexpr double kLeaderBar_mm = 1.6, kLeaderBarShare = 0.4;
 // Rounds over the labels that find no clear spot, each moving to where it runs into the least.
 constexpr int kCrowdedRounds = 2;
 // A label with no clear spot may take one where at most this many labels stand, each moving elsewhere,
@@ -199,9 +211,10 @@ std::vector<int> tab_sides_for_labels(std::span<const ScaledPiece> pieces, std::
 namespace {
 
 // How far a label is from clear, in the order placement gives in: clear of every line and label; clear
-// of them by less (the tight clearance: the ink still keeps off the text); across a fold line; touching
-// the outline too; nowhere clear (where it runs into the least).
-enum class Clearance { Clear, Tight, OverFold, OverOutline, Nowhere };
+// of them by less (the tight clearance: the ink still keeps off the text); clear but away from its edge,
+// tied to it by a leader; across a fold line; touching the outline too; nowhere clear (where it runs
+// into the least).
+enum class Clearance { Clear, Tight, Leader, OverFold, OverOutline, Nowhere };
 
 // What a label says, most informative first: the full text (with the mate's sheet) or the short one,
 // each with the step mark or without it.
@@ -224,6 +237,7 @@ struct SideTask {
   std::size_t form = kForms.size() - 1;
   bool step_side = false;  // the side that shows the seam's step mark where it can (the one with the tab)
   int slot = -1;           // the label's obstacle in its piece
+  std::vector<int> leader_slots;  // its leader's segments among the piece's obstacles (fixed ones)
 };
 
 // Places the labels in three rounds, so that no label takes the room another needs to be legible:
@@ -259,6 +273,11 @@ class LabelPlacer {
       if (!sides_[i].label) try_at_minimum(sides_[i], Clearance::Tight);
     for (std::size_t i : hardest_first)
       if (!sides_[i].label) place_by_moving_others(sides_[i]);
+    for (Clearance level : {Clearance::Clear, Clearance::Tight})
+      for (std::size_t i : hardest_first)
+        if (!sides_[i].label)
+          if (auto label = with_leader(sides_[i], level))
+            commit(sides_[i], std::move(*label), Clearance::Leader, kForms.size() - 1);
     for (Clearance level : {Clearance::OverFold, Clearance::OverOutline})
       for (std::size_t i : hardest_first)
         if (!sides_[i].label) try_at_minimum(sides_[i], level);
@@ -420,22 +439,33 @@ class LabelPlacer {
         at, [&](int t) { return !inside_convex(pieces_[p].triangles_mm[t], point, 0); });
   }
 
+  // The box a label of form `f` at cap height `h` covers: its length, and its height with the
+  // descenders ("p2") below the baseline.
+  struct Extent {
+    double width_mm = 0, height_mm = 0;
+  };
+  Extent extent(const SideTask& side, double h, const Form& f) const {
+    static const std::string none;
+    const std::string& hint = f.with_hint ? hint_of(side) : none;
+    const double descent =
+        std::max(label_descent_mm(text_of(side, f), h), label_descent_mm(hint, o_.hint_height_share * h));
+    return {full_width(side, h, f), h + descent};
+  }
+
+  // The label whose box has its foot at `at`.
   Label make_label(const SideTask& side, Vec2 at, Vec2 dir, double h, const Form& f, bool on_tab) const {
     Label label;
     label.seam = SeamId{side.seam};
     label.side = side.side;
     label.piece = side.piece;
     label.text = text_of(side, f);
-    label.at_mm = at;
     label.dir = dir;
     label.height_mm = h;
     label.on_tab = on_tab;
     if (f.with_hint) label.hint = hint_of(side);
-    // The foot of the box is `at`; descenders ("p2") need room below the baseline.
-    const double descent =
-        std::max(label_descent_mm(label.text, h), label_descent_mm(label.hint, o_.hint_height_share * h));
-    label.at_mm = at + perp_ccw(dir) * descent;
-    label.box_mm = label_box(at, dir, full_width(side, h, f), h + descent);
+    const Extent e = extent(side, h, f);
+    label.at_mm = at + perp_ccw(dir) * (e.height_mm - h);
+    label.box_mm = label_box(at, dir, e.width_mm, e.height_mm);
     return label;
   }
 
@@ -466,36 +496,45 @@ class LabelPlacer {
                                                    0.84, 0.12, 0.88, 0.08, 0.92, 0.04, 0.96};
     const OutlineEdge& e = *side.edge;
     const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
-    const double w = full_width(side, h, f);
+    const Extent ext = extent(side, h, f);
+    const double w = ext.width_mm;
     // Lifted off the edge by up to a label's height (a small one a little more): farther, it would not
     // read as the edge's.
     const double highest = o_.gap_mm + (h <= kSmallLabel * o_.min_mm ? kHighestLiftSmall : kHighestLift) * h;
-    for (double lift : {o_.gap_mm, o_.gap_mm + kMiddleLift * h, o_.gap_mm + kHighestLift * h, highest})
+    // At the legible minimum, where a label has no smaller size to fall back on, every lift; larger, the
+    // coarse ones (growing tries each size).
+    const std::span<const double> lifts =
+        h <= o_.min_mm + 1e-9 ? std::span<const double>(kLifts) : std::span<const double>(kCoarseLifts);
+    for (double lift : lifts) {
+      lift = std::min(o_.gap_mm + lift * h, highest);
       for (double t : kAlong) {
         const Vec2 at = e.a + dir * (t * side.length_mm - 0.5 * w) + up * lift;
         const Vec2 centre = at + dir * (0.5 * w) + up * (0.5 * h);
         if (!inside_piece(side.piece, centre)) continue;
-        Label label = make_label(side, at, dir, h, f, false);
-        if (clear_of_everything(side.piece, label.box_mm, level)) return label;
+        if (clear_of_everything(side.piece, label_box(at, dir, w, ext.height_mm), level))
+          return make_label(side, at, dir, h, f, false);
       }
+    }
     return std::nullopt;
   }
 
   // Across the edge, reading away from it into the face: where the face is a needle on a short edge,
   // the only way a label fits clear of its lines. Tried after every spot along the edge.
   std::optional<Label> across_face(const SideTask& side, double h, const Form& f, Clearance level) const {
-    static constexpr std::array<double, 5> kAt{0.5, 0.35, 0.65, 0.2, 0.8};
+    static constexpr std::array<double, 9> kAt{0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95};
     const OutlineEdge& e = *side.edge;
     const Vec2 dir = normalized(e.b - e.a), into = perp_ccw(dir);
-    const double w = full_width(side, h, f);
-    for (double t : kAt) {
-      // Glyphs grow towards perp_ccw(into) = -dir: the foot at +h/2 puts the text astride the point.
-      const Vec2 at = e.a + dir * (t * side.length_mm + 0.5 * h) + into * o_.gap_mm;
-      const Vec2 centre = at + into * (0.5 * w) - dir * (0.5 * h);
-      if (!inside_piece(side.piece, centre)) continue;
-      Label label = make_label(side, at, into, h, f, false);
-      if (clear_of_everything(side.piece, label.box_mm, level)) return label;
-    }
+    const Extent ext = extent(side, h, f);
+    const double w = ext.width_mm;
+    for (double lift : kAcrossLifts)
+      for (double t : kAt) {
+        // Glyphs grow towards perp_ccw(into) = -dir: the foot at +h/2 puts the text astride the point.
+        const Vec2 at = e.a + dir * (t * side.length_mm + 0.5 * h) + into * (o_.gap_mm + lift * h);
+        const Vec2 centre = at + into * (0.5 * w) - dir * (0.5 * h);
+        if (!inside_piece(side.piece, centre)) continue;
+        if (clear_of_everything(side.piece, label_box(at, into, w, ext.height_mm), level))
+          return make_label(side, at, into, h, f, false);
+      }
     return std::nullopt;
   }
 
@@ -508,6 +547,53 @@ class LabelPlacer {
     return on_face(side, h, f, level);
   }
 
+  // Away from the edge, tied to it by a leader: the label at the legible minimum, parallel to its edge,
+  // its box's nearest point up to leader_reach_mm from just inside the edge's middle, the nearest spot
+  // first and into the face before away from it. The leader keeps inside the piece (clear of the
+  // outline) and off every label; it may cross fold lines, thin and dotted across them.
+  std::optional<Label> with_leader(const SideTask& side, Clearance level) const {
+    if (!(o_.leader_reach_mm > 0)) return std::nullopt;
+    const OutlineEdge& e = *side.edge;
+    const Vec2 dir = normalized(e.b - e.a), up = perp_ccw(dir);
+    const Vec2 anchor = (e.a + e.b) * 0.5 + up * o_.gap_mm;
+    const double half_bar = 0.5 * std::min(kLeaderBar_mm, kLeaderBarShare * side.length_mm);
+    const std::array<Vec2, 2> bar{anchor - dir * half_bar, anchor + dir * half_bar};
+    if (!inside_piece(side.piece, anchor) || !leader_clear(side.piece, bar)) return std::nullopt;
+    const Form& brief = kForms.back();
+    const Extent ext = extent(side, o_.min_mm, brief);
+    const double half_w = 0.5 * ext.width_mm, half_h = 0.5 * ext.height_mm;
+    for (double r = kLeaderStep_mm; r <= o_.leader_reach_mm + 1e-9; r += kLeaderStep_mm)
+      for (double turn : kLeaderTurns_rad) {
+        const Vec2 towards = rotated(up, turn);
+        // From the box's centre, the way back to the anchor leaves the box after `exit`.
+        const double along = std::fabs(dot(towards, dir)), across = std::fabs(dot(towards, up));
+        const double exit =
+            std::min(along > 1e-9 ? half_w / along : 1e300, across > 1e-9 ? half_h / across : 1e300);
+        const Vec2 centre = anchor + towards * (r + exit);
+        if (!inside_piece(side.piece, centre)) continue;
+        const Vec2 foot = centre - dir * half_w - up * half_h;
+        if (!clear_of_everything(side.piece, label_box(foot, dir, ext.width_mm, ext.height_mm), level))
+          continue;
+        const std::array<Vec2, 2> leader{anchor, anchor + towards * (r - o_.clearance_mm)};
+        if (!leader_clear(side.piece, leader)) continue;
+        Label label = make_label(side, foot, dir, o_.min_mm, brief, false);
+        label.leader_mm = {leader, bar};
+        return label;
+      }
+    return std::nullopt;
+  }
+  // A leader's segment: clear of the outline and of every label by the tight clearance.
+  bool leader_clear(int p, const std::array<Vec2, 2>& segment) const {
+    const Polygon line(segment.begin(), segment.end());
+    const PieceObstacles& ob = obstacles_[p];
+    const bool off_outline = ob.line_grid.visit(grown(bounds_of(line), o_.tight_clearance_mm), [&](int i) {
+      const Segment& s = ob.lines[i];
+      const std::array<Vec2, 2> other{s.a, s.b};
+      return s.fold || !convex_overlap(line, other, -o_.tight_clearance_mm);
+    });
+    return off_outline && clear_of_labels(p, line, o_.tight_clearance_mm);
+  }
+
   void add_label_obstacle(int p, const Polygon& box, int side = -1) {
     PieceObstacles& ob = obstacles_[p];
     ob.label_grid.insert(static_cast<int>(ob.labels.size()), bounds_of(box));
@@ -518,6 +604,13 @@ class LabelPlacer {
 
   void commit(SideTask& side, Label label, Clearance level, std::size_t form) {
     if (side.slot >= 0) obstacles_[side.piece].label_active[side.slot] = false;
+    for (int k : std::exchange(side.leader_slots, {}))
+      obstacles_[side.piece].label_active[k] = false;
+    // A leader is a fixed obstacle, like a part letter: no label moves it away.
+    for (const std::array<Vec2, 2>& segment : label.leader_mm) {
+      side.leader_slots.push_back(static_cast<int>(obstacles_[side.piece].labels.size()));
+      add_label_obstacle(side.piece, Polygon(segment.begin(), segment.end()));
+    }
     label.over_fold = level == Clearance::OverFold && !label.on_tab;
     label.crowded = level >= Clearance::OverOutline && !label.on_tab;
     side.clearance = label.on_tab ? Clearance::Clear : level;
@@ -734,7 +827,7 @@ class LabelPlacer {
       for (std::size_t i : seam_sides) {
         if (shown) break;
         SideTask& side = sides_[i];
-        if (side.clearance > Clearance::OverFold) continue;
+        if (side.clearance == Clearance::Leader || side.clearance > Clearance::OverFold) continue;
         const int own = side.slot;
         obstacles_[side.piece].label_active[own] = false;
         std::optional<Label> with_step = find(side, o_.min_mm, kForms[2], Clearance::OverFold);

@@ -923,6 +923,9 @@ void emit_piece(const Draft& d, const DraftIndex& x, std::size_t p, const SheetF
     const Label& label = d.labels[li];
     for (Text& out : upright_label_texts(label, label.text, d.label_options, f.t, f.paper_h))
       sheet.texts.push_back(std::move(out));
+    for (const std::array<Vec2, 2>& segment : label.leader_mm)
+      sheet.paths.push_back({PathRole::Label, {f(segment[0]), f(segment[1])}, false, piece});
+    st.leaders += !label.leader_mm.empty();
     st.labels += 1;
     st.min_label_mm = st.min_label_mm == 0 ? label.height_mm : std::min(st.min_label_mm, label.height_mm);
   }
@@ -970,6 +973,7 @@ void total_stats(double printable_mm2, LayoutResult& r) {
     r.overall.tabs += st.tabs;
     r.overall.dropped_tabs += st.dropped_tabs;
     r.overall.split_tabs += st.split_tabs;
+    r.overall.leaders += st.leaders;
     r.overall.labels += st.labels;
     r.overall.piece_area_mm2 += st.piece_area_mm2;
     r.overall.tab_area_mm2 += st.tab_area_mm2;

@@ -36,7 +36,9 @@ struct RenderOptions {
   RoleStyle mountain{{0.62, 0.12, 0.08}, 0.2, {2.5, 0.8, 0.4, 0.8}};  ///< dash-dot
   RoleStyle valley{{0.08, 0.28, 0.62}, 0.2, {2.0, 1.0}};              ///< dashed
   RoleStyle tab{{0.45, 0.45, 0.45}, 0.15, {}, true, {0.91, 0.91, 0.91}};
-  RoleStyle label{{0, 0, 0}, 0.2, {}};
+  /// Label texts in black; label paths (the leader of a label that stands away from its edge) thin and
+  /// dotted, so that no one takes one for a cut or fold line.
+  RoleStyle label{{0, 0, 0}, 0.15, {0.5, 0.3}};
   RoleStyle hint{{0.1, 0.45, 0.15}, 0.2, {}};
   RoleStyle regmark{{0, 0, 0}, 0.5, {}};         ///< 0.5 mm: the stroke Silhouette's optical sensor expects
   RoleStyle piece{{0.25, 0.25, 0.25}, 0.2, {}};  ///< part letters: dark grey, readable under the lines

@@ -35,6 +35,10 @@ struct LabelOptions {
   /// number's cap height.
   double hint_height_share = 0.75;
   double hint_gap_share = 0.3;
+  /// A label with no clear spot beside its edge may stand this far from the edge's middle (the nearest
+  /// point of its box), inside its piece, tied to the edge by a leader line: read clearly a few
+  /// millimetres away rather than over a line. 0: no leaders.
+  double leader_reach_mm = 8;
 };
 
 /// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
@@ -53,6 +57,10 @@ struct Label {
   std::string hint;
   Polygon box_mm;          ///< the area the label (with its hint) covers
   bool over_fold = false;  ///< clear of outlines and labels but across a fold line
+  /// Where the label stands away from its edge: the leader, from beside the label to just inside the
+  /// edge's middle, then the bar along the edge it points at (two segments, four points); else empty.
+  /// It crosses no outline and no other label, and no other label crosses it.
+  std::vector<std::array<Vec2, 2>> leader_mm;
 };
 
 /// Numbers seams 1..N in outline order: piece by piece along each outline, so that the numbers of

@@ -96,6 +96,7 @@ struct SheetStats {
   double piece_area_mm2 = 0, tab_area_mm2 = 0;
   int pieces = 0, tabs = 0, dropped_tabs = 0, labels = 0;
   int split_tabs = 0;       ///< seams whose tab is split in two halves (each half counts in tabs)
+  int leaders = 0;          ///< labels standing off their edge, tied to it by a leader
   double min_label_mm = 0;  ///< smallest label cap height (0 when there is none)
 };
 
