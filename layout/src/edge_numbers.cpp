@@ -582,16 +582,12 @@ class LabelPlacer {
       }
     return std::nullopt;
   }
-  // A leader's segment: clear of the outline and of every label by the tight clearance.
+  // A leader's segment: clear of the outline (folds it may cross) and of every label by the tight
+  // clearance.
   bool leader_clear(int p, const std::array<Vec2, 2>& segment) const {
     const Polygon line(segment.begin(), segment.end());
-    const PieceObstacles& ob = obstacles_[p];
-    const bool off_outline = ob.line_grid.visit(grown(bounds_of(line), o_.tight_clearance_mm), [&](int i) {
-      const Segment& s = ob.lines[i];
-      const std::array<Vec2, 2> other{s.a, s.b};
-      return s.fold || !convex_overlap(line, other, -o_.tight_clearance_mm);
-    });
-    return off_outline && clear_of_labels(p, line, o_.tight_clearance_mm);
+    return clear_of_lines(p, line, o_.tight_clearance_mm, true) &&
+           clear_of_labels(p, line, o_.tight_clearance_mm);
   }
 
   void add_label_obstacle(int p, const Polygon& box, int side = -1) {
