@@ -240,12 +240,12 @@ Written write_output(const MakeArgs& args, const std::vector<Sheet>& sheets,
     w.sheet_files = w.files.size();
     return w;
   }
-  w.files = write_sheets(sheets, args.output, render, font);
-  w.sheet_files = w.files.size();
   std::filesystem::path guide_path = args.output;
   guide_path.replace_filename(guide_path.stem().string() + "-guide" + guide_path.extension().string());
-  const auto written = devices::render_sheets({*guide}, guide_path, render);
-  w.files.insert(w.files.end(), written.begin(), written.end());
+  // One commit for sheets and guide: a run stopped while drawing the guide leaves no new sheets
+  // beside an old guide.
+  w.files = devices::render_sheets(sheets, args.output, render, {&*guide, guide_path});
+  w.sheet_files = w.files.size() - 1;
   return w;
 }
 

@@ -413,6 +413,32 @@ TEST(Render, AFailureOnALaterSheetLeavesNoFileOfTheRun) {
   EXPECT_EQ(count_entries(dir), 0) << "neither big.png nor a temporary file remains";
 }
 
+TEST(Render, ACompanionThatCannotBeDrawnLeavesNoSheetOfTheRunAndKeepsTheOldOnes) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  std::ofstream(dir / "m.png") << "old sheet";
+  // The guide is too large for a PNG at this resolution: it fails after both sheets were drawn.
+  const Sheet guide = sample_sheet({20000, 297});
+  RenderOptions options;
+  options.png_dpi = 100;
+  try {
+    render_sheets(two_sheets(), dir / "m.png", options, {&guide, dir / "m-guide.png"});
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("m-guide.png"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(count_entries(dir), 1) << "only the old m.png remains";
+  EXPECT_EQ(slurp(dir / "m.png"), "old sheet");
+}
+
+TEST(Render, ACompanionGoesToItsOwnFileInTheFormatOfTheSheets) {
+  const fs::path dir = foldkit::test::temp_dir("render");
+  const Sheet guide = sample_sheet({148, 210});
+  const auto written = render_sheets(two_sheets(), dir / "m.svg", {}, {&guide, dir / "m-guide.svg"});
+  EXPECT_EQ(written, (std::vector<fs::path>{dir / "m.svg", dir / "m-2.svg", dir / "m-guide.svg"}));
+  EXPECT_NE(slurp(dir / "m-guide.svg").find("height=\"210mm\""), std::string::npos);
+  EXPECT_EQ(count_entries(dir), 3);
+}
+
 TEST(Render, NoSheetsIsAnOutputError) {
   const fs::path dir = foldkit::test::temp_dir("render");
   EXPECT_THROW(render_sheets({}, dir / "empty.pdf"), OutputError);

@@ -98,53 +98,82 @@ std::vector<std::filesystem::path> remove_stale_sheet_files(const std::filesyste
   return removed;
 }
 
-std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
-                                                 const std::filesystem::path& path,
-                                                 const RenderOptions& options) {
+namespace {
+
+std::string output_type(const std::filesystem::path& path, const RenderOptions& options) {
   const std::string ext = options.format.empty() ? lower_extension(path) : "." + options.format;
   if (ext != ".pdf" && ext != ".svg" && ext != ".png") {
     throw OutputError(path.string(),
                       "unknown output type '" + path.extension().string() + "' (use .pdf, .svg or .png)");
   }
-  check_sheets(sheets, path);
-
-  if (ext == ".pdf") {
-    AtomicFile file(path);
-    std::string error;
-    // Drawn into memory first: the scaling preference is appended once Cairo has finished the file.
-    std::ostringstream bytes;
-    if (!detail::write_pdf(bytes, sheets, options, path.stem().string(), error)) {
-      throw OutputError(path.string(), error);
-    }
-    std::string pdf = std::move(bytes).str();
-    detail::ask_viewers_not_to_scale(pdf);
-    file.stream().write(pdf.data(), static_cast<std::streamsize>(pdf.size()));
-    file.commit();
-    return {path};
-  }
-
   if (ext == ".png" && !(std::isfinite(options.png_dpi) && options.png_dpi > 0)) {
     throw OutputError(path.string(), "PNG resolution must be a positive number of dots per inch");
   }
-  if (sheets.size() > 1 && resolve_output(path).kind != OutputKind::File) {
+  return ext;
+}
+
+void write_pdf_file(AtomicFile& file, const std::vector<Sheet>& pages, const RenderOptions& options) {
+  std::string error;
+  // Drawn into memory first: the scaling preference is appended once Cairo has finished the file.
+  std::ostringstream bytes;
+  if (!detail::write_pdf(bytes, pages, options, file.target().stem().string(), error)) {
+    throw OutputError(file.target().string(), error);
+  }
+  std::string pdf = std::move(bytes).str();
+  detail::ask_viewers_not_to_scale(pdf);
+  file.stream().write(pdf.data(), static_cast<std::streamsize>(pdf.size()));
+}
+
+// One sheet as one SVG or PNG file.
+void write_picture_file(AtomicFile& file, const Sheet& sheet, const std::string& ext,
+                        const RenderOptions& options, const detail::CapRatios& caps) {
+  if (ext == ".svg") {
+    detail::write_svg(file.stream(), sheet, options, caps);
+    return;
+  }
+  std::string error;
+  if (!detail::write_png(file.stream(), sheet, options, error))
+    throw OutputError(file.target().string(), error);
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
+                                                 const std::filesystem::path& path,
+                                                 const RenderOptions& options) {
+  return render_sheets(sheets, path, options, CompanionSheet{});
+}
+
+std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
+                                                 const std::filesystem::path& path,
+                                                 const RenderOptions& options,
+                                                 const CompanionSheet& companion) {
+  const std::string ext = output_type(path, options);
+  check_sheets(sheets, path);
+  if (companion.sheet) check_sheets({*companion.sheet}, companion.path);
+  const bool one_file = ext == ".pdf";
+  if (!one_file && sheets.size() > 1 && resolve_output(path).kind != OutputKind::File) {
     throw OutputError(path.string(), "SVG and PNG are one file per sheet and the layout has " +
                                          std::to_string(sheets.size()) +
                                          " sheets: give a file name, or write PDF");
   }
   // Every file is complete before the first rename, and a rename that fails puts the earlier ones
-  // back, so a run never leaves sheets 1 and 2 of a new layout beside sheet 3 of an old one.
+  // back, so a run never leaves sheets 1 and 2 of a new layout beside sheet 3 of an old one, or new
+  // sheets beside an old guide.
   AtomicFileSet files;
   const detail::CapRatios caps = ext == ".svg" ? detail::cap_height_ratios(options) : detail::CapRatios{};
-  for (std::size_t i = 0; i < sheets.size(); ++i) {
-    AtomicFile& file = files.add(sheet_file_path(path, i));
-    if (ext == ".svg") {
-      detail::write_svg(file.stream(), sheets[i], options, caps);
-    } else {
-      std::string error;
-      if (!detail::write_png(file.stream(), sheets[i], options, error)) {
-        throw OutputError(file.target().string(), error);
-      }
-    }
+  if (one_file) {
+    write_pdf_file(files.add(path), sheets, options);
+  } else {
+    for (std::size_t i = 0; i < sheets.size(); ++i)
+      write_picture_file(files.add(sheet_file_path(path, i)), sheets[i], ext, options, caps);
+  }
+  if (companion.sheet) {
+    AtomicFile& file = files.add(companion.path);
+    if (one_file)
+      write_pdf_file(file, {*companion.sheet}, options);
+    else
+      write_picture_file(file, *companion.sheet, ext, options, caps);
   }
   files.commit();
   return files.targets();

@@ -64,6 +64,19 @@ std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheet
                                                  const std::filesystem::path& path,
                                                  const RenderOptions& options = {});
 
+/// A sheet that goes to a file of its own beside the numbered sheets (the assembly guide).
+struct CompanionSheet {
+  const Sheet* sheet = nullptr;
+  std::filesystem::path path;
+};
+
+/// As render_sheets, and `companion` to its own file in the same format, committed with the sheets:
+/// a run that stops (an error, a signal) leaves either all of these files new or none of them.
+std::vector<std::filesystem::path> render_sheets(const std::vector<Sheet>& sheets,
+                                                 const std::filesystem::path& path,
+                                                 const RenderOptions& options,
+                                                 const CompanionSheet& companion);
+
 /// The file that sheet `index` (0-based) goes to when every sheet gets its own file:
 /// `path` itself for the first, name-2.ext, name-3.ext, … after it.
 std::filesystem::path sheet_file_path(const std::filesystem::path& path, std::size_t index);
