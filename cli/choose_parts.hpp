@@ -34,6 +34,9 @@ struct ChooseOptions {
   /// Besides parts cut from the unfolding's pieces, patches grown over the surface are tried
   /// (unfold::patch_parts): more parts, but compact ones that fill a sheet where a spindly net's do not.
   bool patches = true;
+  /// Parts that hold slits (seams too narrow for a glue tab) are grown again around them, so that each
+  /// slit runs between two parts and takes a tab, where that costs no sheet and at most a part per tab.
+  bool open_slits = true;
 };
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or

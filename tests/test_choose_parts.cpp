@@ -28,6 +28,7 @@ unfold::PartOptions largest_parts(const unfold::Unfolding& u, const layout::Layo
 cli::ChooseOptions as_split() {
   cli::ChooseOptions o;
   o.join_on_a_sheet = false;
+  o.open_slits = false;
   return o;
 }
 
@@ -77,6 +78,31 @@ TEST(ChooseParts, OfPartitionsAsGoodOnSheetsAndPartsTheOneLeavingFewerSeamsWitho
           << "parts grown to " << fraction << " of the room";
     }
   EXPECT_GT(ties, 1) << "several partitions tie on sheets and parts";
+}
+
+TEST(ChooseParts, PartsHoldingSlitsAreGrownAroundThemWhereThatCostsNoSheetAndAtMostAPartPerTab) {
+  // Penguin at 140 and 160 mm: its parts hold darts at nearly flat vertices, seams whose sides lie too close
+  // for a glue tab. Grown again so that each runs between two parts, they take tabs.
+  const auto& ex = test::unfolded_example("penguin_500.obj", unfold::Method::Search);
+  int opened = 0;
+  for (const double size_mm : {140.0, 160.0}) {
+    layout::LayoutOptions o;
+    o.size_mm = size_mm;
+    cli::ChooseOptions closed;
+    closed.open_slits = false;
+    const cli::ChosenParts before = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, closed);
+    const cli::ChosenParts after = cli::choose_parts(ex.mesh, ex.unfolding, o);
+    ASSERT_TRUE(before.layout && after.layout);
+    if (after.unfolding.piece_count == before.unfolding.piece_count) continue;  // the trade was not worth it
+    ++opened;
+    EXPECT_TRUE(unfold::check_unfolding(ex.mesh, after.unfolding).empty());
+    const int tabs_gained = before.layout->overall.dropped_tabs - after.layout->overall.dropped_tabs;
+    EXPECT_GT(tabs_gained, 0) << "at " << size_mm << " mm";
+    EXPECT_LE(after.unfolding.piece_count - before.unfolding.piece_count, tabs_gained);
+    EXPECT_LE(sheets_with_pieces(*after.layout), sheets_with_pieces(*before.layout));
+    EXPECT_LE(after.layout->label_audit.unclear(), before.layout->label_audit.unclear());
+  }
+  EXPECT_GT(opened, 0) << "at one of the sizes the slits are opened";
 }
 
 TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {

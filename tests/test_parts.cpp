@@ -131,6 +131,55 @@ TEST(Parts, SlitsAreClosedAcrossPartsWithAsManyPartsEachStillFittingTheSheet) {
   EXPECT_LT(after, before);
 }
 
+// Pairs of faces across a narrow seam of `u` that one part of `parts` holds both of.
+int narrow_pairs_in_one_part(const Unfolding& u, const Unfolding& parts, double gap_units) {
+  const std::vector<std::vector<int>> partners = narrow_seam_partners(u, gap_units);
+  int n = 0;
+  for (int f = 0; f < u.num_faces(); ++f)
+    for (int h : partners[f])
+      n += f < h && parts.piece_of_face[f] == parts.piece_of_face[h];
+  return n;
+}
+
+TEST(Parts, WithASlitGapNoPartHoldsBothSidesOfASeamThatNarrowAndEveryPartStillFits) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  for (PartGrowth growth : {PartGrowth::Tree, PartGrowth::Round}) {
+    PartOptions p = room_at(ex.unfolding, 150, 1.0, growth);
+    const double gap_units = 2.5 / p.mm_per_unit;
+    const Unfolding plain = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+    ASSERT_GT(narrow_pairs_in_one_part(ex.unfolding, plain, gap_units), 0) << "penguin's parts hold slits";
+    p.slit_gap_mm = 2.5;
+    const Unfolding opened = split_into_parts(ex.mesh, ex.unfolding, p).unfolding;
+    EXPECT_EQ(check_unfolding(ex.mesh, opened), std::vector<std::string>{});
+    EXPECT_EQ(narrow_pairs_in_one_part(ex.unfolding, opened, gap_units), 0);
+    EXPECT_GT(opened.piece_count, plain.piece_count);
+    expect_parts_fit(opened, p);
+  }
+}
+
+TEST(Parts, ANarrowSeamsFacesArePartnersBothWaysAndTheirEdgesEndsLieWithinTheGap) {
+  const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
+  const Unfolding& u = ex.unfolding;
+  const double gap = 0.02 * u.model_extent;
+  const std::vector<std::vector<int>> partners = narrow_seam_partners(u, gap);
+  int pairs = 0;
+  for (const UnfoldEdge& e : u.edges) {
+    if (!e.glued_seam()) continue;
+    const auto& a = partners[e.face[0]];
+    const bool listed = std::find(a.begin(), a.end(), e.face[1]) != a.end();
+    const auto& b = partners[e.face[1]];
+    EXPECT_EQ(listed, std::find(b.begin(), b.end(), e.face[0]) != b.end());
+    const Vec2 a0 = u.flat[e.face[0]][e.corner[0]], a1 = u.flat[e.face[0]][(e.corner[0] + 1) % 3];
+    const Vec2 b0 = u.flat[e.face[1]][(e.corner[1] + 1) % 3], b1 = u.flat[e.face[1]][e.corner[1]];
+    EXPECT_EQ(listed, norm(a0 - b0) < gap && norm(a1 - b1) < gap) << "seam of faces " << e.face[0];
+    pairs += listed;
+  }
+  EXPECT_GT(pairs, 0);
+  const std::vector<std::vector<int>> none = narrow_seam_partners(u, 0);
+  EXPECT_TRUE(std::all_of(none.begin(), none.end(), [](const std::vector<int>& p) { return p.empty(); }))
+      << "a gap of 0 makes no pairs";
+}
+
 TEST(Parts, SeamMovesInsideThePartsKeepTheForcedCutsAndFolds) {
   const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);
   PartOptions p = room_at(ex.unfolding, 150, 0.5, PartGrowth::Round);

@@ -1201,6 +1201,10 @@ Box2 printable_area(const LayoutOptions& o) {
   return area;
 }
 
+double narrow_slit_gap_mm(const LayoutOptions& o) {
+  return o.tabs ? narrow_slit_gap_mm(tab_options_in_use(o)) : 0;
+}
+
 Vec2 piece_room_mm(const LayoutOptions& o) {
   const Box2 area = printable_area(o);
   const double border = (o.tabs ? o.tab.width_mm : 0) + o.pack.spacing_mm + 2 * o.pack.cell_mm;

@@ -472,9 +472,13 @@ std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& o
   return widths;
 }
 
-bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& o) {
+double narrow_slit_gap_mm(const TabOptions& o) {
   // A mouth this much wider than the narrowest tab still takes none once the slants are cut.
   constexpr double kSlitMouthSpare_mm = 0.5;
+  return o.min_width_mm + kSlitMouthSpare_mm;
+}
+
+bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const TabOptions& o) {
   const SeamSide& a = seam.sides[0];
   const SeamSide& b = seam.sides[1];
   if (a.piece < 0 || a.piece != b.piece) return false;
@@ -484,7 +488,7 @@ bool is_narrow_slit(std::span<const ScaledPiece> pieces, const Seam& seam, const
   // start and b's end are the two copies of one end of the edge. Closer than a tab needs at both ends
   // (at a slit's tip one pair coincides), the two sides are that close all along, and no tab fits
   // between them.
-  const double limit = o.min_width_mm + kSlitMouthSpare_mm;
+  const double limit = narrow_slit_gap_mm(o);
   return norm(on_a.a - on_b.b) < limit && norm(on_a.b - on_b.a) < limit;
 }
 

@@ -12,6 +12,7 @@
 #include "foldkit/geom/rigid.hpp"
 #include "foldkit/unfold/cut_tree.hpp"
 #include "foldkit/unfold/disjoint_sets.hpp"
+#include "foldkit/unfold/slits.hpp"
 
 namespace foldkit::unfold {
 namespace {
@@ -88,11 +89,25 @@ Units units_of(const Unfolding& u, const std::vector<int>& flat_face, const std:
   return units;
 }
 
+// Pairs of faces of a piece across a narrow seam (narrow_seam_partners): in one part they make a slit
+// that takes no glue tab, in two parts the seam gets one like any other between parts.
+struct SlitPairs {
+  std::vector<std::vector<int>> partners;  // per face
+
+  // Whether any of `unit_faces` has a partner in part `id`.
+  bool meets(const std::vector<int>& unit_faces, const std::vector<int>& part, int id) const {
+    for (int f : unit_faces)
+      for (int h : partners[f])
+        if (part[h] == id) return true;
+    return false;
+  }
+};
+
 // Greedy growth leaves small leftovers where a part ran into the room's edge: merges every part into
 // a neighbour (across a fold) whenever the two together still fit, smallest parts first. Renumbers the
 // parts 0..n-1 and returns n.
 int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter& fitter,
-                std::vector<int>& part, int parts) {
+                const SlitPairs& slits, std::vector<int>& part, int parts) {
   std::vector<Hull> hull(parts);
   std::vector<int> size(parts, 0);
   for (int f : faces) {
@@ -103,6 +118,19 @@ int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter&
     h.points = convex_hull(std::move(h.points));
   DisjointSets owner(parts);
   auto find = [&owner](int p) { return owner.find(p); };
+  std::vector<int> slit_faces;  // of this piece
+  for (int f : faces)
+    if (!slits.partners[f].empty()) slit_faces.push_back(f);
+  // Whether parts p and q (roots) together would hold both faces of a slit pair.
+  auto would_close_slit = [&](int p, int q) {
+    for (int f : slit_faces) {
+      const int a = find(part[f]);
+      if (a != p && a != q) continue;
+      for (int h : slits.partners[f])
+        if (find(part[h]) == (a == p ? q : p)) return true;
+    }
+    return false;
+  };
   for (bool merged = true; merged;) {
     merged = false;
     std::vector<std::vector<int>> next(parts);
@@ -124,6 +152,7 @@ int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter&
         if (find(q) != p) around.push_back(find(q));
       std::stable_sort(around.begin(), around.end(), [&](int a, int b) { return size[a] < size[b]; });
       for (int q : around) {
+        if (would_close_slit(p, q)) continue;
         Hull both = hull[q];
         if (!fitter.grow(both, hull[p].points)) continue;
         owner.join(p, q);
@@ -152,7 +181,7 @@ int merge_parts(const Unfolding& u, const std::vector<int>& faces, const Fitter&
 // out roughly round (round parts nest; strips cut off a spindly net do not). Tree growth takes faces
 // breadth-first along the folds from the first face of the piece, which often needs fewer parts.
 int grow_parts(const Unfolding& u, const std::vector<int>& faces, const Units& units, const Fitter& fitter,
-               bool round, std::vector<int>& part) {
+               const SlitPairs& slits, bool round, std::vector<int>& part) {
   std::vector<Vec2> points;
   for (int f : faces)
     points.insert(points.end(), u.flat[f].begin(), u.flat[f].end());
@@ -202,11 +231,12 @@ int grow_parts(const Unfolding& u, const std::vector<int>& faces, const Units& u
       const int g = frontier.top().second;
       frontier.pop();
       const int unit = units.unit_of_face[g];
-      if (part[g] >= 0 || !fitter.grow(hull, units.points[unit])) continue;
+      if (part[g] >= 0 || slits.meets(units.faces[unit], part, id) || !fitter.grow(hull, units.points[unit]))
+        continue;
       take(unit);
     }
   }
-  return merge_parts(u, faces, fitter, part, parts);
+  return merge_parts(u, faces, fitter, slits, part, parts);
 }
 
 std::string format_size(double mm) {
@@ -469,6 +499,7 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   const Fitter fitter(o.mm_per_unit,
                       tile ? o.grow_room_mm : o.room_mm * std::clamp(o.room_fraction, 0.05, 1.0));
   const std::vector<int> flat_face = flat_face_of(u);
+  const SlitPairs slits{narrow_seam_partners(u, o.slit_gap_mm / o.mm_per_unit)};
 
   EdgeStates state = edge_states(u);
   FaceMap<PartRoom> room(u.num_faces(), PartRoom::Sheet);
@@ -490,8 +521,9 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
       room[FaceId(f)] = PartRoom::Grown;
     std::vector<int> tree_part = part;
     const int tree =
-        o.growth == PartGrowth::Round ? 0 : grow_parts(u, faces, units, fitter, false, tree_part);
-    const int round = o.growth == PartGrowth::Tree ? 0 : grow_parts(u, faces, units, fitter, true, part);
+        o.growth == PartGrowth::Round ? 0 : grow_parts(u, faces, units, fitter, slits, false, tree_part);
+    const int round =
+        o.growth == PartGrowth::Tree ? 0 : grow_parts(u, faces, units, fitter, slits, true, part);
     const bool use_tree = o.growth == PartGrowth::Tree || (o.growth == PartGrowth::Fewest && tree < round);
     if (use_tree) part = std::move(tree_part);
     result.new_pieces += use_tree ? tree : round;

@@ -35,6 +35,23 @@ double seam_gap_per_length(const CutTree& tree, EdgeId e) {
   return seam_gap_per_length(tree, e, edge.face_id(0), RigidMotion{});
 }
 
+std::vector<std::vector<int>> narrow_seam_partners(const Unfolding& u, double gap) {
+  std::vector<std::vector<int>> partners(static_cast<std::size_t>(u.num_faces()));
+  if (!(gap > 0)) return partners;
+  for (const UnfoldEdge& e : u.edges) {
+    if (!e.glued_seam() || u.piece_of_face[e.face[0]] != u.piece_of_face[e.face[1]]) continue;
+    const Triangle2& a = u.flat[e.face[0]];
+    const Triangle2& b = u.flat[e.face[1]];
+    // Each face runs the edge from its corner to the next one, the two faces in opposite directions.
+    const int ca = e.corner[0], cb = e.corner[1];
+    if (norm(a[ca] - b[(cb + 1) % 3]) < gap && norm(a[(ca + 1) % 3] - b[cb]) < gap) {
+      partners[e.face[0]].push_back(e.face[1]);
+      partners[e.face[1]].push_back(e.face[0]);
+    }
+  }
+  return partners;
+}
+
 int count_slits(const CutTree& tree, double min_gap_per_length) {
   int n = 0;
   for (EdgeId e : all_ids<EdgeId>(tree.mesh().num_edges()))

@@ -171,6 +171,10 @@ Box2 printable_area(const LayoutOptions& options);
 /// a sheet: the printable area less room for tabs, spacing and the packing raster on every side.
 Vec2 piece_room_mm(const LayoutOptions& options);
 
+/// Two sides of a seam within one piece that lie closer than this (mm) at both ends of its edge take no
+/// glue tab with these options (a narrow slit, tabs.hpp): a partition should put them in two parts.
+double narrow_slit_gap_mm(const LayoutOptions& options);
+
 /// Scales, places and draws every piece. Throws LayoutError when the options are unusable or a piece
 /// cannot fit a sheet at the asked size (the message names the largest --size that fits).
 LayoutResult layout_sheets(const unfold::Unfolding& unfolding, const LayoutOptions& options);

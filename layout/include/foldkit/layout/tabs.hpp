@@ -74,6 +74,10 @@ TabPlan plan_tabs(std::span<const ScaledPiece> pieces, std::span<const Seam> sea
 /// width_per_length of the edge), then narrower by steps, down to min_width_mm (always the last).
 std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& options);
 
+/// How close the two copies of each end of a seam's edge must lie for the seam to be a narrow slit
+/// (is_narrow_slit): a tab of min_width_mm with a little to spare, less its slants, fits no closer.
+double narrow_slit_gap_mm(const TabOptions& options);
+
 /// Whether `seam` is a narrow slit: its two sides lie in one piece, and the two copies of each end of
 /// its edge are closer than a tab of min_width_mm (with a little to spare) needs: neighbours on one
 /// outline meeting at the slit's tip with a narrow mouth, or sides facing each other that close along

@@ -50,6 +50,10 @@ struct PartOptions {
   /// sheet. It must lie within room_mm at some rotation; room_mm still says which pieces need a split.
   Vec2 grow_room_mm{0, 0};
   PartGrowth growth = PartGrowth::Fewest;
+  /// Two faces across a seam whose sides lie closer than this (mm) at both ends of the edge never grow
+  /// into one part: there the seam would be a narrow slit that takes no glue tab, between two parts it
+  /// takes one. 0: parts may hold slits.
+  double slit_gap_mm = 0;
   /// Pieces to cut to the room scaled by room_fraction even though they fit the room whole (the parts
   /// left alone on a last sheet, cut smaller to fill the gaps of the sheets before).
   std::vector<int> also_split;

@@ -7,6 +7,7 @@
 // points (nose, ears, tips), where the wedge is wide.
 #include "foldkit/geom/rigid.hpp"
 #include "foldkit/unfold/cut_tree.hpp"
+#include "foldkit/unfold/unfolding.hpp"
 
 namespace foldkit::unfold {
 
@@ -22,6 +23,11 @@ double seam_gap_per_length(const CutTree& tree, EdgeId e);
 /// The same for cut edge e between face `moved`, placed by `motion`, and its other face where it lies
 /// (whether or not they are in one piece): what the gap would be after a rigid move of `moved`'s side.
 double seam_gap_per_length(const CutTree& tree, EdgeId e, FaceId moved, const RigidMotion& motion);
+
+/// Per face of `u`, the faces across its seams within one piece whose two sides lie closer than
+/// `gap` (model units) at both ends of the edge: while the two faces stay in one part, no glue tab of
+/// that width fits between them.
+std::vector<std::vector<int>> narrow_seam_partners(const Unfolding& u, double gap);
 
 /// Number of slits of `tree` (seams whose gap per length is below `min_gap_per_length`).
 int count_slits(const CutTree& tree, double min_gap_per_length);
