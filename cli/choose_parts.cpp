@@ -14,6 +14,7 @@
 #include "foldkit/layout/pack.hpp"
 #include "foldkit/unfold/parts.hpp"
 #include "foldkit/unfold/seams.hpp"
+#include "foldkit/unfold/slit_cuts.hpp"
 #include "foldkit/unfold/slits.hpp"
 
 namespace foldkit::cli {
@@ -447,14 +448,31 @@ std::vector<int> parts_holding_slits(const unfold::Unfolding& u, double slit_gap
   return parts;
 }
 
-// Parts that still hold slits, each grown again within itself at the full room but never with both
-// sides of a slit in one part: the slits become seams between parts, which take tabs. A part more for
-// each seam that gets a tab at most (fish_350 at 150 mm: 3 more parts for 2 tabs is a poor trade;
-// penguin_500: 6 more for 7 a fair one). Kept when the layout also takes no more sheets and leaves no more
-// labels unclear.
-void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOptions& o, PartChooser& chooser,
-                              Candidate& best) {
-  if (!best.layout || best.layout->overall.dropped_tabs == 0) return;
+// Whether `opened`, `best` with its slits parted, is worth it: no more sheets, fewer seams without a
+// tab, a part more for each seam that gets a tab at most (fish_350 at 150 mm: 3 more parts for 2 tabs is
+// a poor trade; penguin_500: 6 more for 7 a fair one), and no more labels unclear.
+bool worth_opening(const Candidate& opened, const Candidate& best) {
+  const int more_parts = opened.parts.unfolding.piece_count - best.parts.unfolding.piece_count;
+  const int more_tabs = best.layout->overall.dropped_tabs - opened.layout->overall.dropped_tabs;
+  return opened.sheets <= best.sheets && more_tabs > 0 && more_parts <= more_tabs &&
+         opened.layout->label_audit.unclear() <= best.layout->label_audit.unclear();
+}
+
+// Seams without a tab and labels unclear, then parts: which of two openings that are both worth it wins.
+auto opening_rank(const Candidate& c) {
+  return std::make_tuple(c.layout->overall.dropped_tabs + c.layout->label_audit.unclear(),
+                         c.parts.unfolding.piece_count);
+}
+
+// Parts that still hold slits, opened so that each slit runs between two parts and takes a tab, in two
+// ways: each such part grown again within itself at the full room but never with both sides of a slit in
+// one part, and each cut at one fold at a time (unfold::cut_open_at_slits: a new seam of one edge per
+// dart, where the regrowth redraws every boundary of the part). Neither is better everywhere: on the
+// 350-1,000-face meshes at 150 mm the cuts pass where the regrowth costs labels (screwdriver_500,
+// elephant_500) and the other way round (bob_1000). The better of those worth it is kept.
+void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOptions& o, SlitOpening ways,
+                              PartChooser& chooser, Candidate& best) {
+  if (ways == SlitOpening::None || !best.layout || best.layout->overall.dropped_tabs == 0) return;
   if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
   const unfold::Unfolding& u = best.parts.unfolding;
   unfold::PartOptions po = chooser.part_options();
@@ -464,14 +482,21 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
   po.slit_gap_mm = layout::narrow_slit_gap_mm(o);
   po.also_split = parts_holding_slits(u, po.slit_gap_mm / po.mm_per_unit);
   if (po.also_split.empty()) return;
-  Candidate c = derived_from(best, unfold::split_into_parts(mesh, u, po).unfolding);
-  c.estimated_sheets = best.estimated_sheets;
-  chooser.lay_out(c);
-  const int more_parts = c.parts.unfolding.piece_count - u.piece_count;
-  const int more_tabs = best.layout->overall.dropped_tabs - c.layout->overall.dropped_tabs;
-  if (c.sheets <= best.sheets && more_tabs > 0 && more_parts <= more_tabs &&
-      c.layout->label_audit.unclear() <= best.layout->label_audit.unclear())
-    best = std::move(c);
+  std::vector<Candidate> openings;
+  if (ways != SlitOpening::Cut)
+    openings.push_back(derived_from(best, unfold::split_into_parts(mesh, u, po).unfolding));
+  if (ways != SlitOpening::Regrown)
+    openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, po)));
+  std::optional<Candidate> kept;
+  for (Candidate& c : openings) {
+    if (same_parts(c.parts.unfolding, u) || (kept && same_parts(c.parts.unfolding, kept->parts.unfolding)))
+      continue;
+    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) break;
+    c.estimated_sheets = best.estimated_sheets;
+    chooser.lay_out(c);
+    if (worth_opening(c, best) && (!kept || opening_rank(c) < opening_rank(*kept))) kept = std::move(c);
+  }
+  if (kept) best = std::move(*kept);
 }
 
 // Parts that share a sheet, joined back along seams between them (unfold::join_parts), the smallest
@@ -573,7 +598,7 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
     fewer_seams_without_tab(chooser, candidates, best);
     if (part_options.move_seams) close_slits_across_parts(mesh, o, chooser, best);
-    if (choose.open_slits) open_slits_between_parts(mesh, o, chooser, best);
+    open_slits_between_parts(mesh, o, choose.open_slits, chooser, best);
     if (choose.join_on_a_sheet) join_parts_on_a_sheet(mesh, o, chooser, best);
   }
   if (best.patches)

@@ -26,6 +26,10 @@ struct ChosenParts {
   bool patches = false;
 };
 
+/// Ways to open the slits a partition's parts hold: none; each such part grown again around its slits;
+/// each cut at one fold per slit (unfold::cut_open_at_slits); or whichever of the two leaves fewer flaws.
+enum class SlitOpening { None, Regrown, Cut, Better };
+
 /// What the choice may do beyond picking a partition.
 struct ChooseOptions {
   /// Parts that share a sheet are joined back along seams between them where that costs no sheet:
@@ -34,9 +38,9 @@ struct ChooseOptions {
   /// Besides parts cut from the unfolding's pieces, patches grown over the surface are tried
   /// (unfold::patch_parts): more parts, but compact ones that fill a sheet where a spindly net's do not.
   bool patches = true;
-  /// Parts that hold slits (seams too narrow for a glue tab) are grown again around them, so that each
-  /// slit runs between two parts and takes a tab, where that costs no sheet and at most a part per tab.
-  bool open_slits = true;
+  /// How parts that hold slits (seams too narrow for a glue tab) are opened, so that each slit runs
+  /// between two parts and takes a tab, where that costs no sheet, no label and at most a part per tab.
+  SlitOpening open_slits = SlitOpening::Better;
 };
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or

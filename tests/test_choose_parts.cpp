@@ -28,7 +28,7 @@ unfold::PartOptions largest_parts(const unfold::Unfolding& u, const layout::Layo
 cli::ChooseOptions as_split() {
   cli::ChooseOptions o;
   o.join_on_a_sheet = false;
-  o.open_slits = false;
+  o.open_slits = cli::SlitOpening::None;
   return o;
 }
 
@@ -89,7 +89,7 @@ TEST(ChooseParts, PartsHoldingSlitsAreGrownAroundThemWhereThatCostsNoSheetAndAtM
     layout::LayoutOptions o;
     o.size_mm = size_mm;
     cli::ChooseOptions closed;
-    closed.open_slits = false;
+    closed.open_slits = cli::SlitOpening::None;
     const cli::ChosenParts before = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, closed);
     const cli::ChosenParts after = cli::choose_parts(ex.mesh, ex.unfolding, o);
     ASSERT_TRUE(before.layout && after.layout);
@@ -103,6 +103,34 @@ TEST(ChooseParts, PartsHoldingSlitsAreGrownAroundThemWhereThatCostsNoSheetAndAtM
     EXPECT_LE(after.layout->label_audit.unclear(), before.layout->label_audit.unclear());
   }
   EXPECT_GT(opened, 0) << "at one of the sizes the slits are opened";
+}
+
+TEST(ChooseParts, OfTheTwoWaysToOpenSlitsTheOneLeavingFewerFlawsIsKeptAndEachWinsSomewhere) {
+  const auto flaws = [](const cli::ChosenParts& c) {
+    return c.layout->overall.dropped_tabs + c.layout->label_audit.unclear();
+  };
+  int cuts_won = 0, regrowth_won = 0;
+  for (const auto& [name, size_mm] : {std::pair{"fish_350.obj", 120.0}, std::pair{"fish_350.obj", 170.0},
+                                      std::pair{"penguin_500.obj", 130.0}}) {
+    const auto& ex = test::unfolded_example(name, unfold::Method::Search);
+    layout::LayoutOptions o;
+    o.size_mm = size_mm;
+    cli::ChooseOptions way;
+    way.join_on_a_sheet = false;
+    way.open_slits = cli::SlitOpening::Regrown;
+    const cli::ChosenParts regrown = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, way);
+    way.open_slits = cli::SlitOpening::Cut;
+    const cli::ChosenParts cut = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, way);
+    way.open_slits = cli::SlitOpening::Better;
+    const cli::ChosenParts better = cli::choose_parts(ex.mesh, ex.unfolding, o, {}, way);
+    ASSERT_TRUE(regrown.layout && cut.layout && better.layout);
+    EXPECT_EQ(flaws(better), std::min(flaws(regrown), flaws(cut))) << name << " at " << size_mm << " mm";
+    EXPECT_TRUE(unfold::check_unfolding(ex.mesh, better.unfolding).empty());
+    cuts_won += flaws(cut) < flaws(regrown);
+    regrowth_won += flaws(regrown) < flaws(cut);
+  }
+  EXPECT_GT(cuts_won, 0) << "cut at one fold per slit, the fish's parts leave fewer seams without a tab";
+  EXPECT_GT(regrowth_won, 0) << "grown again, the penguin's parts do";
 }
 
 TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {

@@ -131,15 +131,7 @@ TEST(Parts, SlitsAreClosedAcrossPartsWithAsManyPartsEachStillFittingTheSheet) {
   EXPECT_LT(after, before);
 }
 
-// Pairs of faces across a narrow seam of `u` that one part of `parts` holds both of.
-int narrow_pairs_in_one_part(const Unfolding& u, const Unfolding& parts, double gap_units) {
-  const std::vector<std::vector<int>> partners = narrow_seam_partners(u, gap_units);
-  int n = 0;
-  for (int f = 0; f < u.num_faces(); ++f)
-    for (int h : partners[f])
-      n += f < h && parts.piece_of_face[f] == parts.piece_of_face[h];
-  return n;
-}
+using test::narrow_pairs_in_one_part;
 
 TEST(Parts, WithASlitGapNoPartHoldsBothSidesOfASeamThatNarrowAndEveryPartStillFits) {
   const auto& ex = test::unfolded_example("penguin_500.obj", Method::Search);

@@ -11,6 +11,7 @@
 #include "foldkit/layout/layout.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/parts.hpp"
+#include "foldkit/unfold/slits.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "test_paths.hpp"
 
@@ -65,6 +66,18 @@ inline UnfoldedExample tetrahedron() {
     if (ex.mesh.edge(e).v[0] == 0) state[e] = unfold::EdgeState::Cut;
   ex.unfolding = unfold::flatten(ex.mesh, state);
   return ex;
+}
+
+/// Pairs of faces across a seam of `u` narrower than `gap_units` that one part of `parts` (`u` cut
+/// further) holds both of: slits a split left inside a part.
+inline int narrow_pairs_in_one_part(const unfold::Unfolding& u, const unfold::Unfolding& parts,
+                                    double gap_units) {
+  const std::vector<std::vector<int>> partners = unfold::narrow_seam_partners(u, gap_units);
+  int n = 0;
+  for (int f = 0; f < u.num_faces(); ++f)
+    for (int h : partners[f])
+      n += f < h && parts.piece_of_face[f] == parts.piece_of_face[h];
+  return n;
 }
 
 }  // namespace foldkit::test

@@ -540,9 +540,7 @@ PartsResult split_into_parts(const Mesh& mesh, const Unfolding& u, const PartOpt
   }
   if (changed) {
     if (o.move_seams) state = with_seams_moved(mesh, u, state, room, whole, fitter, o);
-    result.unfolding = flatten(mesh, state);
-    for (std::size_t e = 0; e < u.edges.size(); ++e)
-      result.unfolding.edges[e].inside_face = u.edges[e].inside_face && !result.unfolding.edges[e].cut;
+    result.unfolding = flatten_like(mesh, state, u);
   }
   return result;
 }
@@ -615,10 +613,7 @@ class PartJoiner {
 
 // An unfolding of `tree`'s state that keeps `parts`' flat faces marked where they stay folded.
 Unfolding flattened_like(const Mesh& mesh, const CutTree& tree, const Unfolding& parts) {
-  Unfolding result = flatten(mesh, tree.states());
-  for (std::size_t e = 0; e < parts.edges.size(); ++e)
-    result.edges[e].inside_face = parts.edges[e].inside_face && !result.edges[e].cut;
-  return result;
+  return flatten_like(mesh, tree.states(), parts);
 }
 
 }  // namespace
@@ -644,9 +639,7 @@ std::optional<Unfolding> patch_parts(const Mesh& mesh, const Unfolding& unfoldin
     const EdgeId id(static_cast<int>(e));
     if (!edge.inside_face && !edge.boundary() && !o.constraints.fold(id)) faces_apart[id] = EdgeState::Cut;
   }
-  Unfolding apart = flatten(mesh, faces_apart);
-  for (std::size_t e = 0; e < unfolding.edges.size(); ++e)
-    apart.edges[e].inside_face = unfolding.edges[e].inside_face && !apart.edges[e].cut;
+  const Unfolding apart = flatten_like(mesh, faces_apart, unfolding);
   if (CutTree(make_context(mesh, o.cuts), faces_apart).overlap_count() > 0) return std::nullopt;
   const Unfolding joined = join_parts(mesh, apart, o, [](int, int) { return true; });
   const UnfoldContext ctx = make_context(mesh, o.cuts);

@@ -108,6 +108,13 @@ Unfolding flatten(const Mesh& mesh, const EdgeStates& state) {
   return u;
 }
 
+Unfolding flatten_like(const Mesh& mesh, const EdgeStates& state, const Unfolding& like) {
+  Unfolding u = flatten(mesh, state);
+  for (std::size_t e = 0; e < like.edges.size() && e < u.edges.size(); ++e)
+    u.edges[e].inside_face = like.edges[e].inside_face && !u.edges[e].cut;
+  return u;
+}
+
 std::vector<std::string> check_unfolding(const Mesh& mesh, const Unfolding& u, double rel_tol) {
   std::vector<std::string> problems;
   auto report = [&](const std::string& s) {

@@ -61,6 +61,10 @@ EdgeStates edge_states(const Unfolding& unfolding);
 /// that closes them.
 Unfolding flatten(const Mesh& mesh, const EdgeStates& state);
 
+/// flatten(), with the edges inside flat faces marked as in `like` (an unfolding of the same mesh) where
+/// they stay folded: the flat faces of an unfolding a partition was made from.
+Unfolding flatten_like(const Mesh& mesh, const EdgeStates& state, const Unfolding& like);
+
 /// Every violation of the invariants above, one readable line each; empty when the unfolding is valid.
 /// `rel_tol` bounds the relative error of flat edge lengths.
 std::vector<std::string> check_unfolding(const Mesh& mesh, const Unfolding& unfolding, double rel_tol = 1e-9);
