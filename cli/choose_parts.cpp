@@ -155,16 +155,32 @@ class PartChooser {
   // paper the estimate did not see: where the layout then needs more sheets than estimated, it is laid
   // out again with fewer such tabs, down to the estimate's own tabs, until it needs no more sheets than
   // estimated; the one with fewest sheets is kept: a sheet is worth more than those labels.
+  //
+  // The full layout stops once packed when that takes more sheets than estimated: its labels would be
+  // placed for nothing, as a layout with fewer tabs follows (spot_2000 at 150 mm: 1.8 s for a full layout
+  // on 3 sheets, 0.75 s when it stops once packed, then 0.7 s for the 2 sheets kept). Only where no layout
+  // with fewer tabs packs onto fewer sheets is it laid out in full after all.
   void lay_out(Candidate& c) {
-    c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
-    c.sheets = sheets_with_pieces(*c.layout);
-    if (c.estimated_sheets == 0) return;
-    for (const layout::LayoutOptions& fewer_tabs : fewer_label_tabs()) {
-      if (c.sheets <= c.estimated_sheets) return;
+    const std::vector<layout::LayoutOptions> ladder = fewer_label_tabs();
+    if (c.estimated_sheets == 0 || ladder.empty()) {
+      c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
+      c.sheets = sheets_with_pieces(*c.layout);
+      return;
+    }
+    layout::BoundedLayout full =
+        layout::layout_sheets_within(c.parts.unfolding, numbered(o_, ++layouts_), c.estimated_sheets);
+    c.layout = std::move(full.layout);
+    c.sheets = c.layout ? sheets_with_pieces(*c.layout) : full.packed_sheets;
+    for (const layout::LayoutOptions& fewer_tabs : ladder) {
+      if (c.sheets <= c.estimated_sheets) break;
       layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(fewer_tabs, ++layouts_));
       if (sheets_with_pieces(r) >= c.sheets) continue;
       c.sheets = sheets_with_pieces(r);
       c.layout = std::move(r);
+    }
+    if (!c.layout) {
+      c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
+      c.sheets = sheets_with_pieces(*c.layout);
     }
   }
 

@@ -737,3 +737,24 @@ TEST(Layout, EverySheetGetsItsScaleSquareWhereACornerKeptForItCostsNoSheet) {
     EXPECT_EQ(noted, without > 0) << name;
   }
 }
+
+TEST(Layout, ALayoutAskedToFitFewerSheetsThanItPacksOntoStopsOncePackedAndSaysHowManyItTook) {
+  const auto& ex = test::unfolded_example("bob_350.obj");
+  LayoutOptions o;
+  o.size_mm = 190;
+  const LayoutResult whole = layout_sheets(ex.unfolding, o);
+  const long sheets = static_cast<long>(whole.sheets.size());
+  ASSERT_GE(sheets, 2) << "bob at 190 mm takes more than one A4 sheet";
+  const BoundedLayout stopped = layout_sheets_within(ex.unfolding, o, sheets - 1);
+  EXPECT_FALSE(stopped.layout.has_value());
+  EXPECT_EQ(stopped.packed_sheets, sheets);
+  const BoundedLayout finished = layout_sheets_within(ex.unfolding, o, sheets);
+  ASSERT_TRUE(finished.layout.has_value());
+  EXPECT_EQ(finished.packed_sheets, sheets);
+  ASSERT_EQ(finished.layout->placements.size(), whole.placements.size());
+  for (std::size_t p = 0; p < whole.placements.size(); ++p) {
+    EXPECT_EQ(finished.layout->placements[p].sheet, whole.placements[p].sheet) << "piece " << p;
+    EXPECT_EQ(finished.layout->placements[p].offset_mm, whole.placements[p].offset_mm) << "piece " << p;
+  }
+  EXPECT_EQ(finished.layout->label_audit.labels, whole.label_audit.labels);
+}

@@ -710,6 +710,7 @@ void measure_label_room(const Draft& d, const unfold::Unfolding& u, const Layout
 struct Attempt {
   LayoutResult result;
   bool complete = false;
+  long packed_sheets = 0;  ///< the sheets the packing took (0 when it left pieces over)
 };
 
 // What packing was given and what it made of it: the pieces (with their tabs) first, then the blocks of
@@ -1157,9 +1158,10 @@ void keep_corner_for_square(const unfold::Unfolding& u, const LayoutOptions& o, 
 }
 
 // One layout at `scale`: drawn, packed (on at most max_sheets when set) and emitted. Incomplete when
-// pieces are left over with max_sheets; without it, a piece that fits no sheet is a LayoutError.
-Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
-              std::optional<int> max_sheets) {
+// pieces are left over with max_sheets; without it, a piece that fits no sheet is a LayoutError. Also
+// incomplete, and not emitted, when the packing takes more than `finish_within` sheets.
+Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale, std::optional<int> max_sheets,
+              std::optional<long> finish_within = std::nullopt) {
   Attempt attempt;
   LayoutResult& r = attempt.result;
   r.scale_mm_per_unit = scale;
@@ -1173,6 +1175,8 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale,
     if (!max_sheets) throw piece_too_large(u, o, k.packed.unplaced.front(), r.size_mm);
     return attempt;
   }
+  attempt.packed_sheets = k.packed.sheet_count;
+  if (finish_within && attempt.packed_sheets > *finish_within) return attempt;
   attempt.complete = true;
   take_label_tabs_in_place(u, d, o, k);
   std::optional<Draft> drawn;
@@ -1229,11 +1233,31 @@ Vec2 piece_room_mm(const LayoutOptions& o) {
   return {std::max(room.x, 0.0), std::max(room.y, 0.0)};
 }
 
-LayoutResult layout_sheets(const unfold::Unfolding& u, const LayoutOptions& o) {
+namespace {
+
+void check_layout_input(const unfold::Unfolding& u, const LayoutOptions& o) {
   validate(o);
   if (u.num_faces() == 0 || u.piece_count == 0)
     throw LayoutError("nothing to lay out: the unfolding has no faces");
   if (!(u.model_extent > 0)) throw LayoutError("the model has no extent to scale");
+}
+
+}  // namespace
+
+BoundedLayout layout_sheets_within(const unfold::Unfolding& u, const LayoutOptions& o, long most_sheets) {
+  if (!o.size_mm || o.fit) {
+    LayoutResult r = layout_sheets(u, o);
+    const long sheets = static_cast<long>(r.sheets.size());
+    return {std::move(r), sheets};
+  }
+  check_layout_input(u, o);
+  Attempt a = build(u, o, *o.size_mm / u.model_extent, std::nullopt, most_sheets);
+  if (!a.complete) return {std::nullopt, a.packed_sheets};
+  return {std::move(a.result), a.packed_sheets};
+}
+
+LayoutResult layout_sheets(const unfold::Unfolding& u, const LayoutOptions& o) {
+  check_layout_input(u, o);
 
   if (o.size_mm && !o.fit) return build(u, o, *o.size_mm / u.model_extent, std::nullopt).result;
 

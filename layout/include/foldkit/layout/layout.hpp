@@ -179,4 +179,17 @@ double narrow_slit_gap_mm(const LayoutOptions& options);
 /// cannot fit a sheet at the asked size (the message names the largest --size that fits).
 LayoutResult layout_sheets(const unfold::Unfolding& unfolding, const LayoutOptions& options);
 
+/// A layout that may stop once packed: `layout` is empty when the packing took more than the sheets
+/// asked for, and nothing was labelled or drawn (half or more of a layout's time), for a caller that
+/// would then lay out again with other options. `packed_sheets`: the sheets the packing took.
+struct BoundedLayout {
+  std::optional<LayoutResult> layout;
+  long packed_sheets = 0;
+};
+
+/// layout_sheets(), stopped after packing when that takes more than `most_sheets` sheets; at a fixed
+/// size only (with fit or without a size, the whole layout). Throws as layout_sheets does.
+BoundedLayout layout_sheets_within(const unfold::Unfolding& unfolding, const LayoutOptions& options,
+                                   long most_sheets);
+
 }  // namespace foldkit::layout
