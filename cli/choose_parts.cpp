@@ -162,11 +162,11 @@ class PartChooser {
   // with fewer tabs packs onto fewer sheets is it laid out in full after all.
   void lay_out(Candidate& c) {
     const std::vector<layout::LayoutOptions> ladder = fewer_label_tabs();
-    if (c.estimated_sheets == 0 || ladder.empty()) {
+    const auto in_full = [&] {
       c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
       c.sheets = sheets_with_pieces(*c.layout);
-      return;
-    }
+    };
+    if (c.estimated_sheets == 0 || ladder.empty()) return in_full();
     layout::BoundedLayout full =
         layout::layout_sheets_within(c.parts.unfolding, numbered(o_, ++layouts_), c.estimated_sheets);
     c.layout = std::move(full.layout);
@@ -178,10 +178,7 @@ class PartChooser {
       c.sheets = sheets_with_pieces(r);
       c.layout = std::move(r);
     }
-    if (!c.layout) {
-      c.layout = layout::layout_sheets(c.parts.unfolding, numbered(o_, ++layouts_));
-      c.sheets = sheets_with_pieces(*c.layout);
-    }
+    if (!c.layout) in_full();
   }
 
   // The layouts lay_out tries after the full one, each with fewer tabs for labels: whole tabs (none split),

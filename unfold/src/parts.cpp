@@ -260,15 +260,6 @@ void check_flat_faces_fit(const Unfolding& u, const Units& units, const Fitter& 
 // piece that was not split.
 enum class PartRoom : unsigned char { Sheet, Grown };
 
-// The forced cuts and folds a move must keep: the caller's, and a fold on every edge inside a flat face.
-EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& given) {
-  EdgeConstraints c = given;
-  if (c.rule.empty()) c.rule.assign(static_cast<int>(u.edges.size()), EdgeRule::Free);
-  for (std::size_t e = 0; e < u.edges.size(); ++e)
-    if (u.edges[e].inside_face) c.rule[EdgeId(static_cast<int>(e))] = EdgeRule::MustFold;
-  return c;
-}
-
 // Whether both labels of edge e fit beside it were it cut (every edge without grades).
 bool labels_fit(const std::vector<LabelFit>& fit, EdgeId e) {
   return fit.empty() || fit[static_cast<std::size_t>(e.index())] == LabelFit::BothSides;
@@ -475,6 +466,14 @@ std::string PartTooLarge::message(int triangles, Vec2 room_mm, double asked_mm, 
          format_size(room_mm.x) + "x" + format_size(room_mm.y) + " mm room for a part at " + size_name + " " +
          format_size(asked_mm) + "mm; the largest " + size_name + " that fits is " + format_size(largest_mm) +
          "mm";
+}
+
+EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& given) {
+  EdgeConstraints c = given;
+  if (c.rule.empty()) c.rule.assign(static_cast<int>(u.edges.size()), EdgeRule::Free);
+  for (std::size_t e = 0; e < u.edges.size(); ++e)
+    if (u.edges[e].inside_face) c.rule[EdgeId(static_cast<int>(e))] = EdgeRule::MustFold;
+  return c;
 }
 
 std::vector<int> flat_face_of(const Unfolding& u) {

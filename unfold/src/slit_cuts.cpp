@@ -106,10 +106,7 @@ Unfolding cut_open_at_slits(const Mesh& mesh, const Unfolding& parts, const Part
     for (int g : partners[f])
       if (f < g) slits.emplace_back(FaceId(f), FaceId(g));
   if (slits.empty()) return parts;
-  EdgeConstraints kept = options.constraints;
-  if (kept.rule.empty()) kept.rule.assign(static_cast<int>(parts.edges.size()), EdgeRule::Free);
-  for (std::size_t e = 0; e < parts.edges.size(); ++e)
-    if (parts.edges[e].inside_face) kept.rule[EdgeId(static_cast<int>(e))] = EdgeRule::MustFold;
+  const EdgeConstraints kept = move_constraints(parts, options.constraints);
   const std::vector<LabelFit> fit = tight_edges(mesh, options.cuts);
   EdgeStates state = edge_states(parts);
   bool cut = false;

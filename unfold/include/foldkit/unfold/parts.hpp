@@ -137,6 +137,10 @@ Unfolding join_parts(const Mesh& mesh, const Unfolding& parts, const PartOptions
 std::optional<Unfolding> patch_parts(const Mesh& mesh, const Unfolding& unfolding,
                                      const PartOptions& options);
 
+/// The forced cuts and folds any change to the parts of `u` must keep: `given` (one rule per edge, or none),
+/// and a fold on every edge inside a flat face.
+EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& given);
+
 /// Per face, the flat face it belongs to (faces joined by UnfoldEdge::inside_face), numbered from 0.
 std::vector<int> flat_face_of(const Unfolding& unfolding);
 
