@@ -47,14 +47,14 @@ int flaws(const layout::LayoutResult& r) {
 }  // namespace
 
 TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptWhenItHasFewerFlaws) {
-  // Without leaders, so that fish_350's first unfolding keeps the labels the second one clears (with
-  // them, the labels that find no room beside their edges stand off on leaders in both).
+  // fish_350 at 140 mm: its first unfolding leaves labels without a clear spot even on leaders; the
+  // second one's seams run where they have room.
   layout::LayoutOptions o = at_150_mm();
-  o.label.leader_reach_mm = 0;
+  o.size_mm = 140;
   cli::UnfoldRun run = unfolded_for_print("fish_350.obj", o);
   const layout::LayoutResult first = first_choice(run, o);
   ASSERT_GT(flaws(first), cli::kFewFlawsShare * first.label_audit.labels)
-      << "fish_350 at 150 mm leaves some labels unclear";
+      << "fish_350 at 140 mm leaves some labels unclear";
   const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Balanced) << "the second unfolding printed";

@@ -140,6 +140,7 @@ TEST(EdgeNumbers, ANeedleFaceCrossedByAFoldStillGetsItsLabelAcrossItRatherThanOv
   const std::vector<std::vector<FoldLine>> folds{{FoldLine{PathRole::Valley, {0.1, 2}, {2.9, 2}, 7}}};
   LabelOptions o;
   o.min_mm = 2;
+  o.leader_reach_mm = 0;  // with leaders it stands off beyond the fold (the test below)
   const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
   ASSERT_EQ(labels.size(), 1u);
   const Label& l = labels.front();
@@ -148,6 +149,27 @@ TEST(EdgeNumbers, ANeedleFaceCrossedByAFoldStillGetsItsLabelAcrossItRatherThanOv
   EXPECT_NEAR(dot(l.dir, Vec2{0, 1}), 1, 1e-9) << "reads away from the base, into the face";
   for (Vec2 corner : l.box_mm)
     EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}
+
+TEST(EdgeNumbers, ALabelOnALeaderReadsAcrossItsEdgeWhereOnlyThatWayFitsClear) {
+  // The needle with the fold 2 mm above its base: no spot beside the base and none across the face below
+  // the fold. Beyond the fold the needle is too narrow for "12" along the base, not across it.
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {3, 0}, {1.5, 30});
+  const std::array<Vec2, 2> fold{Vec2{0.1, 2}, Vec2{2.9, 2}};
+  const std::vector<std::vector<FoldLine>> folds{{FoldLine{PathRole::Valley, fold[0], fold[1], 7}}};
+  LabelOptions o;
+  o.min_mm = 2;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_FALSE(l.crowded);
+  EXPECT_FALSE(l.over_fold);
+  ASSERT_EQ(l.leader_mm.size(), 2u) << "a leader and the bar along the base";
+  EXPECT_NEAR(std::fabs(dot(l.dir, Vec2{0, 1})), 1, 1e-9) << "reads along the needle, across the base";
+  EXPECT_FALSE(convex_overlap(l.box_mm, fold, -o.tight_clearance_mm));
+  for (Vec2 corner : l.box_mm)
+    EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+  EXPECT_LE(norm(l.leader_mm[0][1] - l.leader_mm[0][0]), o.leader_reach_mm);
 }
 
 TEST(EdgeNumbers, ALabelWithNoSpotAtTheFullClearanceKeepsTheTightOneBeforeCrossingAFold) {
@@ -359,7 +381,7 @@ TEST(EdgeNumbers, NumbersRestartInEachPartAndEachPairOfPartsInOutlineOrder) {
   EXPECT_LT(largest, static_cast<int>(seams.size()) / 2) << "numbers stay shorter than one count over all";
 }
 
-TEST(EdgeNumbers, TheTightestSeamsOfACountGetItsOneDigitNumbersStillInOutlineOrder) {
+TEST(EdgeNumbers, TheTightestSeamsOfACountGetItsNarrowestNumbersStillInOutlineOrder) {
   const auto& ex = test::unfolded_example("spot_350.obj");
   const auto pieces = scaled_pieces(ex.unfolding, 150 / ex.unfolding.model_extent);
   const auto seams = find_seams(ex.unfolding, pieces);
@@ -375,27 +397,35 @@ TEST(EdgeNumbers, TheTightestSeamsOfACountGetItsOneDigitNumbersStillInOutlineOrd
     const int a = seams[s].sides[0].piece, b = seams[s].sides[1].piece;
     of_pair[{std::min(a, b), std::max(a, b)}].push_back({printed[s], outline[s], room[s]});
   }
-  auto digits = [](int n) { return n < 10 ? 1 : n < 100 ? 2 : 3; };
+  const auto width = [](int n) { return label_width_mm(number_text(n), 1, LabelOptions{}); };
+  ASSERT_LT(width(5), width(6)) << "a marked 6. prints wider than 5";
+  ASSERT_LT(width(9), width(10)) << "and narrower than 10";
   std::size_t largest = 0;
+  bool marked_one_digit_last = false;
   for (auto& [pair, numbers] : of_pair) {
     largest = std::max(largest, numbers.size());
     std::sort(numbers.begin(), numbers.end(),
               [](const Numbered& a, const Numbered& b) { return a.printed < b.printed; });
-    double widest_short = -1e300, tightest_long = 1e300;
     for (std::size_t i = 0; i < numbers.size(); ++i) {
       EXPECT_EQ(numbers[i].printed, static_cast<int>(i) + 1);
-      if (digits(numbers[i].printed) == 1) {
-        widest_short = std::max(widest_short, numbers[i].room_mm);
-      } else {
-        tightest_long = std::min(tightest_long, numbers[i].room_mm);
-      }
-      if (i > 0 && digits(numbers[i].printed) == digits(numbers[i - 1].printed)) {
-        EXPECT_GT(numbers[i].outline, numbers[i - 1].outline) << "numbers of one width follow the outline";
+      for (std::size_t j = 0; j < numbers.size(); ++j) {
+        const double wi = width(numbers[i].printed), wj = width(numbers[j].printed);
+        if (wi < wj - 1e-9) {
+          EXPECT_LE(numbers[i].room_mm, numbers[j].room_mm) << "a roomier seam took a narrower number";
+        } else if (std::fabs(wi - wj) < 1e-9 && numbers[i].printed < numbers[j].printed) {
+          EXPECT_LT(numbers[i].outline, numbers[j].outline) << "numbers of one width follow the outline";
+        }
       }
     }
-    EXPECT_LE(widest_short, tightest_long) << "a roomier seam took a one-digit number";
+    if (numbers.size() >= 9) {
+      // The tightest seams take 1-5, 7, 8 before the marked 6. and 9.
+      const double room_of_6 = numbers[5].room_mm, room_of_7 = numbers[6].room_mm;
+      EXPECT_GE(room_of_6, room_of_7);
+      marked_one_digit_last = marked_one_digit_last || room_of_6 > room_of_7;
+    }
   }
   ASSERT_GT(largest, 20u) << "a count long enough for two-digit numbers";
+  EXPECT_TRUE(marked_one_digit_last) << "somewhere 6. went to a roomier seam than 7";
   EXPECT_NE(printed, number_seams_by_part(seams, outline))
       << "the tightest seams are not the first along the outline";
 }

@@ -140,14 +140,10 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
 
 namespace {
 
-// The digits of the k-th number of a count (k from 0): 1-9 one digit, 10-99 two, and so on.
-int digits_of_rank(std::size_t k) {
-  int digits = 1;
-  for (std::size_t limit = 9, width = 9; k >= limit; limit += width) {
-    width *= 10;
-    ++digits;
-  }
-  return digits;
+// How wide number `n` prints, in mm per mm of cap height: a marked "6." is narrower than "12", wider
+// than "5".
+double printed_width(int n) {
+  return label_width_mm(number_text(n), 1, LabelOptions{});
 }
 
 }  // namespace
@@ -160,20 +156,27 @@ std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<con
     of_pair[{std::min(a, b), std::max(a, b)}].push_back(s);
   }
   std::vector<int> number(seams.size(), 0);
-  std::vector<int> digits(seams.size(), 1);
+  std::vector<double> width(seams.size(), 0);
   for (auto& [pair, group] : of_pair) {
+    // The count's numbers, narrowest print first; the k-th tightest seam takes the k-th one's width.
+    std::vector<int> narrowest_first(group.size());
+    std::iota(narrowest_first.begin(), narrowest_first.end(), 1);
     if (room_mm.size() == seams.size()) {
+      std::stable_sort(narrowest_first.begin(), narrowest_first.end(),
+                       [](int a, int b) { return printed_width(a) < printed_width(b) - 1e-9; });
       std::vector<std::size_t> tightest_first = group;
       std::stable_sort(tightest_first.begin(), tightest_first.end(),
                        [&](std::size_t a, std::size_t b) { return room_mm[a] < room_mm[b]; });
       for (std::size_t k = 0; k < tightest_first.size(); ++k)
-        digits[tightest_first[k]] = digits_of_rank(k);
+        width[tightest_first[k]] = printed_width(narrowest_first[k]);
     }
+    // Within one width, the numbers rise along the outline.
     std::stable_sort(group.begin(), group.end(), [&](std::size_t a, std::size_t b) {
-      return std::pair(digits[a], outline_numbers[a]) < std::pair(digits[b], outline_numbers[b]);
+      if (std::fabs(width[a] - width[b]) > 1e-9) return width[a] < width[b];
+      return outline_numbers[a] < outline_numbers[b];
     });
     for (std::size_t k = 0; k < group.size(); ++k)
-      number[group[k]] = static_cast<int>(k) + 1;
+      number[group[k]] = narrowest_first[k];
   }
   return number;
 }
@@ -562,24 +565,27 @@ class LabelPlacer {
     const Form& brief = kForms.back();
     const Extent ext = extent(side, o_.min_mm, brief);
     const double half_w = 0.5 * ext.width_mm, half_h = 0.5 * ext.height_mm;
+    // The label parallel to its edge, else across it: a narrow gap between lines often runs the other way.
+    const std::array<Vec2, 2> reading{dir, up};
     for (double r = kLeaderStep_mm; r <= o_.leader_reach_mm + 1e-9; r += kLeaderStep_mm)
-      for (double turn : kLeaderTurns_rad) {
-        const Vec2 towards = rotated(up, turn);
-        // From the box's centre, the way back to the anchor leaves the box after `exit`.
-        const double along = std::fabs(dot(towards, dir)), across = std::fabs(dot(towards, up));
-        const double exit =
-            std::min(along > 1e-9 ? half_w / along : 1e300, across > 1e-9 ? half_h / across : 1e300);
-        const Vec2 centre = anchor + towards * (r + exit);
-        if (!inside_piece(side.piece, centre)) continue;
-        const Vec2 foot = centre - dir * half_w - up * half_h;
-        if (!clear_of_everything(side.piece, label_box(foot, dir, ext.width_mm, ext.height_mm), level))
-          continue;
-        const std::array<Vec2, 2> leader{anchor, anchor + towards * (r - o_.clearance_mm)};
-        if (!leader_clear(side.piece, leader)) continue;
-        Label label = make_label(side, foot, dir, o_.min_mm, brief, false);
-        label.leader_mm = {leader, bar};
-        return label;
-      }
+      for (double turn : kLeaderTurns_rad)
+        for (Vec2 d : reading) {
+          const Vec2 towards = rotated(up, turn), n = perp_ccw(d);
+          // From the box's centre, the way back to the anchor leaves the box after `exit`.
+          const double along = std::fabs(dot(towards, d)), across = std::fabs(dot(towards, n));
+          const double exit =
+              std::min(along > 1e-9 ? half_w / along : 1e300, across > 1e-9 ? half_h / across : 1e300);
+          const Vec2 centre = anchor + towards * (r + exit);
+          if (!inside_piece(side.piece, centre)) continue;
+          const Vec2 foot = centre - d * half_w - n * half_h;
+          if (!clear_of_everything(side.piece, label_box(foot, d, ext.width_mm, ext.height_mm), level))
+            continue;
+          const std::array<Vec2, 2> leader{anchor, anchor + towards * (r - o_.clearance_mm)};
+          if (!leader_clear(side.piece, leader)) continue;
+          Label label = make_label(side, foot, d, o_.min_mm, brief, false);
+          label.leader_mm = {leader, bar};
+          return label;
+        }
     return std::nullopt;
   }
   // A leader's segment: clear of the outline (folds it may cross) and of every label by the tight

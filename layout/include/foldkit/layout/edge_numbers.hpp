@@ -38,7 +38,7 @@ struct LabelOptions {
   /// A label with no clear spot beside its edge may stand this far from the edge's middle (the nearest
   /// point of its box), inside its piece, tied to the edge by a leader line: read clearly a few
   /// millimetres away rather than over a line. 0: no leaders.
-  double leader_reach_mm = 8;
+  double leader_reach_mm = 16;
 };
 
 /// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
@@ -74,9 +74,11 @@ std::vector<int> number_seams(std::span<const ScaledPiece> pieces, std::span<con
 /// so numbers need only be unique per pair of parts; they stay one or two digits where one count over
 /// the whole model needs three, and a short label is what fits beside a small face. With one part this
 /// is number_seams.
-/// With `room_mm` (per seam, seam_label_room_mm), the shortest numbers go where room is least: within
-/// each count the 9 tightest seams take 1-9, the next 90 take 10-99, and so on, each group still rising
-/// in outline order, so a label that has to squeeze beside a small face is one digit, not three.
+/// With `room_mm` (per seam, seam_label_room_mm), the narrowest numbers go where room is least: within
+/// each count the numbers are ranked by printed width (1-5, 7 and 8, then the marked "6." and "9.", then
+/// 10, 11, …, the marked "16." after the unmarked two-digit numbers), the tightest seams take the
+/// narrowest, and the numbers of one width still rise in outline order, so a label that has to squeeze
+/// beside a small face is one digit, not three, and unmarked where it can be.
 std::vector<int> number_seams_by_part(std::span<const Seam> seams, std::span<const int> outline_numbers,
                                       std::span<const double> room_mm = {});
 
