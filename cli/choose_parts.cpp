@@ -483,6 +483,31 @@ auto opening_rank(const Candidate& c) {
   return std::make_tuple(flaws(c), c.parts.unfolding.piece_count);
 }
 
+// The parts of `u` (`before`'s) whose opening in `opened` parts more slits than it leaves labels without
+// a clear spot on the pieces cut from them: where the whole opening costs more labels than it gains tabs,
+// it is often a few small parts in a region of small faces that cost them.
+std::vector<int> parts_worth_opening(const unfold::Unfolding& u, const Candidate& before,
+                                     const Candidate& opened, double slit_gap_units) {
+  const unfold::Unfolding& after = opened.parts.unfolding;
+  std::vector<int> parted(u.piece_count, 0);  // per part of u: its slits that now run between parts
+  const std::vector<std::vector<int>> partners = unfold::narrow_seam_partners(u, slit_gap_units);
+  for (int f = 0; f < u.num_faces(); ++f)
+    for (int g : partners[f])
+      parted[u.piece_of_face[f]] += f < g && after.piece_of_face[f] != after.piece_of_face[g];
+  std::vector<int> balance = parted;  // less the labels its pieces lost
+  for (const layout::LayoutResult::CrowdedLabel& l : before.layout->crowded_labels)
+    if (l.piece >= 0) balance[l.piece] += 1;
+  std::vector<int> part_of_piece(after.piece_count, -1);  // each piece of `after` lies in one part of u
+  for (int f = 0; f < after.num_faces(); ++f)
+    part_of_piece[after.piece_of_face[f]] = u.piece_of_face[f];
+  for (const layout::LayoutResult::CrowdedLabel& l : opened.layout->crowded_labels)
+    if (l.piece >= 0) balance[part_of_piece[l.piece]] -= 1;
+  std::vector<int> parts;
+  for (int p = 0; p < u.piece_count; ++p)
+    if (parted[p] > 0 && balance[p] > 0) parts.push_back(p);
+  return parts;
+}
+
 // Parts that still hold slits, opened so that each slit runs between two parts and takes a tab, in two
 // ways: each such part grown again within itself at the full room but never with both sides of a slit in
 // one part, and each cut at one fold at a time (unfold::cut_open_at_slits: a new seam of one edge per
@@ -506,14 +531,23 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
     openings.push_back(derived_from(best, unfold::split_into_parts(mesh, u, po).unfolding));
   if (ways != SlitOpening::Regrown)
     openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, po)));
+  const std::size_t cuts = openings.size() - 1;  // the last opening, unless the way is Regrown only
   std::optional<Candidate> kept;
-  for (Candidate& c : openings) {
-    if (same_parts(c.parts.unfolding, u) || (kept && same_parts(c.parts.unfolding, kept->parts.unfolding)))
+  for (std::size_t i = 0; i < openings.size(); ++i) {
+    if (same_parts(openings[i].parts.unfolding, u) ||
+        (kept && same_parts(openings[i].parts.unfolding, kept->parts.unfolding)))
       continue;
     if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) break;
-    c.estimated_sheets = best.estimated_sheets;
-    chooser.lay_out(c);
+    openings[i].estimated_sheets = best.estimated_sheets;
+    chooser.lay_out(openings[i]);
+    // Where cutting every part open is not worth it, the parts whose cuts gain more than they cost.
+    unfold::PartOptions some = po;
+    if (i == cuts && ways != SlitOpening::Regrown && !worth_opening(openings[i], best))
+      some.also_split = parts_worth_opening(u, best, openings[i], po.slit_gap_mm / po.mm_per_unit);
+    Candidate& c = openings[i];
     if (worth_opening(c, best) && (!kept || opening_rank(c) < opening_rank(*kept))) kept = std::move(c);
+    if (!some.also_split.empty() && some.also_split != po.also_split)
+      openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, some)));  // c no longer used
   }
   if (kept) best = std::move(*kept);
 }

@@ -7,6 +7,7 @@
 
 #include "choose_parts.hpp"
 #include "foldkit/unfold/parts.hpp"
+#include "foldkit/unfold/slit_cuts.hpp"
 #include "layout_fixtures.hpp"
 
 using namespace foldkit;
@@ -133,6 +134,34 @@ TEST(ChooseParts, SlitsAreOpenedWhereTheTabsGainedOutnumberTheLabelsTheyLeaveUnc
   EXPECT_LE(sheets_with_pieces(*after.layout), sheets_with_pieces(*before.layout));
   const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
   EXPECT_TRUE(unfold::check_unfolding(ex.mesh, after.unfolding).empty());
+}
+
+TEST(ChooseParts, WhereCuttingEveryPartOpenIsNotWorthItThePartsWhoseCutsGainMoreThanTheyCostAreCutAlone) {
+  // Fish at 120 mm: cut open at every slit it takes 9 parts and costs labels in the small ones; only the
+  // parts whose cuts gain more tabs than they leave labels unclear are cut.
+  cli::ChooseOptions closed;
+  closed.join_on_a_sheet = false;
+  cli::ChooseOptions cut = closed;
+  cut.open_slits = cli::SlitOpening::Cut;
+  closed.open_slits = cli::SlitOpening::None;
+  const cli::ChosenParts before = chosen_for("fish_350.obj", 120, closed);
+  const cli::ChosenParts after = chosen_for("fish_350.obj", 120, cut);
+  ASSERT_TRUE(before.layout && after.layout);
+  const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
+  unfold::PartOptions every_part;
+  every_part.mm_per_unit = 120 / ex.unfolding.model_extent;
+  layout::LayoutOptions o;
+  every_part.slit_gap_mm = layout::narrow_slit_gap_mm(o);
+  const unfold::Unfolding all_cut = unfold::cut_open_at_slits(ex.mesh, before.unfolding, every_part);
+  EXPECT_GT(after.unfolding.piece_count, before.unfolding.piece_count);
+  EXPECT_LT(after.unfolding.piece_count, all_cut.piece_count) << "some parts are left whole";
+  EXPECT_LT(after.layout->overall.dropped_tabs + after.layout->label_audit.unclear(),
+            before.layout->overall.dropped_tabs + before.layout->label_audit.unclear());
+  EXPECT_TRUE(unfold::check_unfolding(ex.mesh, after.unfolding).empty());
+  for (std::size_t e = 0; e < after.unfolding.edges.size(); ++e)
+    if (before.unfolding.edges[e].cut) {
+      EXPECT_TRUE(after.unfolding.edges[e].cut) << "edge " << e << " was glued back";
+    }
 }
 
 TEST(ChooseParts, OfTheTwoWaysToOpenSlitsTheOneLeavingFewerFlawsIsKeptAndEachWinsSomewhere) {

@@ -1,6 +1,7 @@
 // unfold/slit_cuts: parts cut open at their slits, one fold edge at a time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -88,4 +89,33 @@ TEST(SlitCuts, WithoutAGapNothingIsCut) {
   const Unfolding cut = cut_open_at_slits(p.ex.mesh, p.parts, p.options);
   EXPECT_EQ(cut.piece_count, p.parts.piece_count);
   EXPECT_EQ(cut_edges(cut), cut_edges(p.parts));
+}
+
+TEST(SlitCuts, OnlyThePartsAskedForAreCutOpen) {
+  SplitPenguin p;
+  const double gap_units = kGapMm / p.options.mm_per_unit;
+  const std::vector<std::vector<int>> partners = narrow_seam_partners(p.parts, gap_units);
+  std::vector<int> holding;  // parts holding a slit
+  for (int f = 0; f < p.parts.num_faces(); ++f)
+    if (!partners[f].empty()) holding.push_back(p.parts.piece_of_face[f]);
+  std::sort(holding.begin(), holding.end());
+  holding.erase(std::unique(holding.begin(), holding.end()), holding.end());
+  ASSERT_GT(holding.size(), 1u) << "two parts or more hold slits";
+  p.options.also_split = {holding.front()};
+  const Unfolding cut = cut_open_at_slits(p.ex.mesh, p.parts, p.options);
+  EXPECT_EQ(check_unfolding(p.ex.mesh, cut), std::vector<std::string>{});
+  EXPECT_GT(cut.piece_count, p.parts.piece_count);
+  for (std::size_t e = 0; e < cut.edges.size(); ++e) {
+    if (p.parts.edges[e].cut || !cut.edges[e].cut) continue;
+    for (int f : p.parts.edges[e].face) {
+      if (f >= 0) {
+        EXPECT_EQ(p.parts.piece_of_face[f], holding.front()) << "edge " << e << " cut in another part";
+      }
+    }
+  }
+  for (int f = 0; f < p.parts.num_faces(); ++f)
+    for (int g : partners[f])
+      if (p.parts.piece_of_face[f] != holding.front()) {
+        EXPECT_EQ(cut.piece_of_face[f], cut.piece_of_face[g]) << "a slit of a part not asked for was parted";
+      }
 }

@@ -101,10 +101,14 @@ Unfolding cut_open_at_slits(const Mesh& mesh, const Unfolding& parts, const Part
   if (!(options.slit_gap_mm > 0) || !(options.mm_per_unit > 0)) return parts;
   const std::vector<std::vector<int>> partners =
       narrow_seam_partners(parts, options.slit_gap_mm / options.mm_per_unit);
+  const auto opened = [&](int f) {
+    return options.also_split.empty() ||
+           std::binary_search(options.also_split.begin(), options.also_split.end(), parts.piece_of_face[f]);
+  };
   std::vector<std::pair<FaceId, FaceId>> slits;
   for (int f = 0; f < parts.num_faces(); ++f)
     for (int g : partners[f])
-      if (f < g) slits.emplace_back(FaceId(f), FaceId(g));
+      if (f < g && opened(f)) slits.emplace_back(FaceId(f), FaceId(g));
   if (slits.empty()) return parts;
   const EdgeConstraints kept = move_constraints(parts, options.constraints);
   const std::vector<LabelFit> fit = tight_edges(mesh, options.cuts);

@@ -16,7 +16,8 @@ namespace foldkit::unfold {
 /// smaller than a few faces where another edge does not, then the one where both labels of the new seam
 /// fit (options.cuts), then the one with the most even sides, then the longest. Never a fold inside a
 /// flat face or one the user asked to keep (options.constraints); a slit that only such folds could part
-/// stays. `parts` itself when nothing is cut.
+/// stays. With options.also_split (sorted part indices) only those parts are opened. `parts` itself
+/// when nothing is cut.
 Unfolding cut_open_at_slits(const Mesh& mesh, const Unfolding& parts, const PartOptions& options);
 
 }  // namespace foldkit::unfold
