@@ -531,7 +531,9 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
     openings.push_back(derived_from(best, unfold::split_into_parts(mesh, u, po).unfolding));
   if (ways != SlitOpening::Regrown)
     openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, po)));
+  constexpr int kNarrowings = 2;                 // layouts of ever fewer parts cut open, at most
   const std::size_t cuts = openings.size() - 1;  // the last opening, unless the way is Regrown only
+  std::vector<int> cut_open = po.also_split;     // the parts the last cut opening opened
   std::optional<Candidate> kept;
   for (std::size_t i = 0; i < openings.size(); ++i) {
     if (same_parts(openings[i].parts.unfolding, u) ||
@@ -542,12 +544,17 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
     chooser.lay_out(openings[i]);
     // Where cutting every part open is not worth it, the parts whose cuts gain more than they cost.
     unfold::PartOptions some = po;
-    if (i == cuts && ways != SlitOpening::Regrown && !worth_opening(openings[i], best))
+    if (i >= cuts && i < cuts + kNarrowings && ways != SlitOpening::Regrown &&
+        !worth_opening(openings[i], best))
       some.also_split = parts_worth_opening(u, best, openings[i], po.slit_gap_mm / po.mm_per_unit);
     Candidate& c = openings[i];
     if (worth_opening(c, best) && (!kept || opening_rank(c) < opening_rank(*kept))) kept = std::move(c);
-    if (!some.also_split.empty() && some.also_split != po.also_split)
+    std::erase_if(some.also_split,
+                  [&](int p) { return !std::binary_search(cut_open.begin(), cut_open.end(), p); });
+    if (!some.also_split.empty() && some.also_split != cut_open) {
+      cut_open = some.also_split;
       openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, some)));  // c no longer used
+    }
   }
   if (kept) best = std::move(*kept);
 }
