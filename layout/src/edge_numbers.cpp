@@ -567,10 +567,19 @@ class LabelPlacer {
     const double half_w = 0.5 * ext.width_mm, half_h = 0.5 * ext.height_mm;
     // The label parallel to its edge, else across it: a narrow gap between lines often runs the other way.
     const std::array<Vec2, 2> reading{dir, up};
+    // A leader that runs into a line or label does so at every longer reach: that way is closed.
+    std::array<bool, kLeaderTurns_rad.size()> closed{};
     for (double r = kLeaderStep_mm; r <= o_.leader_reach_mm + 1e-9; r += kLeaderStep_mm)
-      for (double turn : kLeaderTurns_rad)
+      for (std::size_t k = 0; k < kLeaderTurns_rad.size(); ++k) {
+        if (closed[k]) continue;
+        const Vec2 towards = rotated(up, kLeaderTurns_rad[k]);
+        const std::array<Vec2, 2> leader{anchor, anchor + towards * (r - o_.clearance_mm)};
+        if (!leader_clear(side.piece, leader)) {
+          closed[k] = true;
+          continue;
+        }
         for (Vec2 d : reading) {
-          const Vec2 towards = rotated(up, turn), n = perp_ccw(d);
+          const Vec2 n = perp_ccw(d);
           // From the box's centre, the way back to the anchor leaves the box after `exit`.
           const double along = std::fabs(dot(towards, d)), across = std::fabs(dot(towards, n));
           const double exit =
@@ -580,12 +589,11 @@ class LabelPlacer {
           const Vec2 foot = centre - d * half_w - n * half_h;
           if (!clear_of_everything(side.piece, label_box(foot, d, ext.width_mm, ext.height_mm), level))
             continue;
-          const std::array<Vec2, 2> leader{anchor, anchor + towards * (r - o_.clearance_mm)};
-          if (!leader_clear(side.piece, leader)) continue;
           Label label = make_label(side, foot, d, o_.min_mm, brief, false);
           label.leader_mm = {leader, bar};
           return label;
         }
+      }
     return std::nullopt;
   }
   // A leader's segment: clear of the outline (folds it may cross) and of every label by the tight
