@@ -307,6 +307,10 @@ long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, do
                                                   layout::printable_area(o)));
 }
 
+int flaws(const layout::LayoutResult& r) {
+  return r.label_audit.unclear() + r.overall.dropped_tabs;
+}
+
 namespace {
 
 // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack poorly;
@@ -461,9 +465,8 @@ std::vector<int> parts_holding_slits(const unfold::Unfolding& u, double slit_gap
   return parts;
 }
 
-// Seams without a tab and labels unclear: the flaws a builder meets on the sheets.
 int flaws(const Candidate& c) {
-  return c.layout->overall.dropped_tabs + c.layout->label_audit.unclear();
+  return cli::flaws(*c.layout);
 }
 
 // Whether `opened`, `best` with its slits parted, is worth it: no more sheets, fewer seams without a
@@ -549,8 +552,7 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
       some.also_split = parts_worth_opening(u, best, openings[i], po.slit_gap_mm / po.mm_per_unit);
     Candidate& c = openings[i];
     if (worth_opening(c, best) && (!kept || opening_rank(c) < opening_rank(*kept))) kept = std::move(c);
-    std::erase_if(some.also_split,
-                  [&](int p) { return !std::binary_search(cut_open.begin(), cut_open.end(), p); });
+    // Parts left whole part no slit, so each narrowing opens a subset of the one before.
     if (!some.also_split.empty() && some.also_split != cut_open) {
       cut_open = some.also_split;
       openings.push_back(derived_from(best, unfold::cut_open_at_slits(mesh, u, some)));  // c no longer used

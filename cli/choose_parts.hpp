@@ -51,6 +51,10 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfo
                          const layout::LayoutOptions& options, const unfold::PartOptions& parts = {},
                          const ChooseOptions& choose = {});
 
+/// What a builder stumbles on, counted alike: labels that may be misread (crossing a line or touching
+/// another) and seams without a glue tab. Candidates are judged by it.
+int flaws(const layout::LayoutResult& r);
+
 /// What a split into parts keeps from the options `mesh` was unfolded with: the forced cuts and folds
 /// (--cut/--keep), the cuts' label grading, whether seams move.
 unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::UnfoldOptions& unfolded);

@@ -23,13 +23,9 @@ constexpr double kUnfoldShareOfTimeLimit = 0.75;
 // there at 150 mm most labels need a larger size anyway (the remedy says which).
 constexpr int kMostFacesForSeamsWithRoom = 500;
 
-// What a builder stumbles on, counted alike: labels that may be misread (crossing a line or touching
-// another) and seams without a glue tab. Judged on labels alone the second unfolding traded 54 fewer
-// unclear labels for 5 more seams without a tab (882 -> 828, 208 -> 213 over the label sweep's meshes);
-// judged on both, fewer of each (docs/unfolding.md).
-int flaws(const layout::LayoutResult& r) {
-  return r.label_audit.unclear() + r.overall.dropped_tabs;
-}
+// The two unfoldings are judged by flaws (labels unclear and seams without a tab). Judged on labels
+// alone the second unfolding traded 54 fewer unclear labels for 5 more seams without a tab (882 -> 828,
+// 208 -> 213 over the label sweep's meshes); judged on both, fewer of each (docs/unfolding.md).
 
 void note_parts(unfold::UnfoldResult& result, const ChosenParts& parts) {
   if (parts.patches)

@@ -110,8 +110,7 @@ TEST(ChooseParts, PartsHoldingSlitsAreGrownAroundThemWhereThatCostsNoSheetAndAtM
     EXPECT_GT(tabs_gained, 0) << "at " << size_mm << " mm";
     EXPECT_LE(after.unfolding.piece_count - before.unfolding.piece_count, tabs_gained);
     EXPECT_LE(sheets_with_pieces(*after.layout), sheets_with_pieces(*before.layout));
-    EXPECT_LT(after.layout->overall.dropped_tabs + after.layout->label_audit.unclear(),
-              before.layout->overall.dropped_tabs + before.layout->label_audit.unclear())
+    EXPECT_LT(cli::flaws(*after.layout), cli::flaws(*before.layout))
         << "fewer seams without a tab and labels unclear in all";
   }
   EXPECT_GT(opened, 0) << "at one of the sizes the slits are opened";
@@ -155,8 +154,7 @@ TEST(ChooseParts, WhereCuttingEveryPartOpenIsNotWorthItThePartsWhoseCutsGainMore
   const unfold::Unfolding all_cut = unfold::cut_open_at_slits(ex.mesh, before.unfolding, every_part);
   EXPECT_GT(after.unfolding.piece_count, before.unfolding.piece_count);
   EXPECT_LT(after.unfolding.piece_count, all_cut.piece_count) << "some parts are left whole";
-  EXPECT_LT(after.layout->overall.dropped_tabs + after.layout->label_audit.unclear(),
-            before.layout->overall.dropped_tabs + before.layout->label_audit.unclear());
+  EXPECT_LT(cli::flaws(*after.layout), cli::flaws(*before.layout));
   EXPECT_TRUE(unfold::check_unfolding(ex.mesh, after.unfolding).empty());
   for (std::size_t e = 0; e < after.unfolding.edges.size(); ++e)
     if (before.unfolding.edges[e].cut) {
@@ -165,9 +163,7 @@ TEST(ChooseParts, WhereCuttingEveryPartOpenIsNotWorthItThePartsWhoseCutsGainMore
 }
 
 TEST(ChooseParts, OfTheTwoWaysToOpenSlitsTheOneLeavingFewerFlawsIsKeptAndEachWinsSomewhere) {
-  const auto flaws = [](const cli::ChosenParts& c) {
-    return c.layout->overall.dropped_tabs + c.layout->label_audit.unclear();
-  };
+  const auto flaws = [](const cli::ChosenParts& c) { return cli::flaws(*c.layout); };
   int cuts_won = 0, regrowth_won = 0;
   for (const auto& [name, size_mm] :
        {std::pair{"fish_350.obj", 160.0}, std::pair{"penguin_500.obj", 130.0}}) {

@@ -39,11 +39,6 @@ layout::LayoutResult first_choice(const cli::UnfoldRun& run, const layout::Layou
   return parts.layout ? std::move(*parts.layout) : layout::layout_sheets(parts.unfolding, o);
 }
 
-// Labels a builder may misread and seams without a glue tab.
-int flaws(const layout::LayoutResult& r) {
-  return r.label_audit.unclear() + r.overall.dropped_tabs;
-}
-
 }  // namespace
 
 TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptWhenItHasFewerFlaws) {
@@ -53,13 +48,13 @@ TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptW
   o.size_mm = 140;
   cli::UnfoldRun run = unfolded_for_print("fish_350.obj", o);
   const layout::LayoutResult first = first_choice(run, o);
-  ASSERT_GT(flaws(first), cli::kFewFlawsShare * first.label_audit.labels)
+  ASSERT_GT(cli::flaws(first), cli::kFewFlawsShare * first.label_audit.labels)
       << "fish_350 at 140 mm leaves some labels unclear";
   const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Balanced) << "the second unfolding printed";
   EXPECT_LE(chosen->sheets.size(), first.sheets.size());
-  EXPECT_LT(flaws(*chosen), flaws(first));
+  EXPECT_LT(cli::flaws(*chosen), cli::flaws(first));
   EXPECT_LT(chosen->label_audit.unclear(), first.label_audit.unclear());
   EXPECT_EQ(run.result.unfolding.piece_count, chosen->placements.size())
       << "the parts laid out are the run's";
@@ -69,10 +64,10 @@ TEST(Pipeline, ALayoutWithFewFlawsKeepsTheDefaultUnfolding) {
   const layout::LayoutOptions o = at_150_mm();
   cli::UnfoldRun run = unfolded_for_print("bob_350.obj", o);
   const layout::LayoutResult first = first_choice(run, o);
-  ASSERT_LE(flaws(first), cli::kFewFlawsShare * first.label_audit.labels);
+  ASSERT_LE(cli::flaws(first), cli::kFewFlawsShare * first.label_audit.labels);
   const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
   EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Short);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(chosen->sheets.size(), first.sheets.size());
-  EXPECT_EQ(flaws(*chosen), flaws(first));
+  EXPECT_EQ(cli::flaws(*chosen), cli::flaws(first));
 }
