@@ -51,8 +51,16 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& unfo
                          const layout::LayoutOptions& options, const unfold::PartOptions& parts = {},
                          const ChooseOptions& choose = {});
 
-/// What a builder stumbles on, counted alike: labels that may be misread (crossing a line or touching
-/// another) and seams without a glue tab. Candidates are judged by it.
+/// What a seam without a glue tab counts for in flaws, in labels that may be misread. The maker has no
+/// way round a missing tab but to butt the edges and tape them from behind, a joint that shows and
+/// gives; a label touching a line still mostly reads, and its number is printed on the other side too.
+/// Counted alike, openings that put tabs on 1,000-face meshes at 150 mm were refused for the labels
+/// their new seams crowd where faces are a few millimetres across, and those meshes' labels need a
+/// larger size anyway (the remedy says which).
+inline constexpr int kSeamWithoutTabFlaws = 2;
+
+/// What a builder stumbles on: labels that may be misread (crossing a line or touching another), and
+/// seams without a glue tab at kSeamWithoutTabFlaws each. Candidates are judged by it.
 int flaws(const layout::LayoutResult& r);
 
 /// What a split into parts keeps from the options `mesh` was unfolded with: the forced cuts and folds
