@@ -319,6 +319,29 @@ TEST(EdgeNumbers, WithoutLeadersALabelWithNoRoomBesideItsEdgeCrossesAFoldThere) 
   EXPECT_TRUE(labels.front().leader_mm.empty());
 }
 
+TEST(EdgeNumbers, ALabelWithNoClearSpotAnywhereStandsOffAcrossFoldsRatherThanOverAnotherText) {
+  // The tiny base with two tall part letters over it, a narrow way up between them, and the large face
+  // above ruled by folds 2 mm apart: no spot is clear of lines, and every spot beside the base covers a
+  // letter. On a leader up the way, the label crosses folds only.
+  auto [pieces, seams, folds] = tiny_face_in_a_fan();
+  for (double y = 4; y < 12; y += 2)
+    folds[0].push_back(FoldLine{PathRole::Valley, {-3 * y / 12 + 0.2, y}, {1 + 4 * y / 12 - 0.2, y}, 8});
+  const Polygon left{{-1.5, 0.6}, {0.7, 0.6}, {0.7, 6}, {-1.5, 6}},
+      right{{1.3, 0.6}, {3.5, 0.6}, {3.5, 6}, {1.3, 6}};
+  const std::vector<std::vector<Polygon>> taken{{left, right}};
+  const LabelOptions o;
+  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o, {}, taken);
+  ASSERT_EQ(labels.size(), 1u);
+  const Label& l = labels.front();
+  EXPECT_TRUE(l.over_fold);
+  EXPECT_FALSE(l.crowded);
+  ASSERT_EQ(l.leader_mm.size(), 2u);
+  EXPECT_FALSE(convex_overlap(l.box_mm, left, 0));
+  EXPECT_FALSE(convex_overlap(l.box_mm, right, 0));
+  for (const OutlineEdge& edge : pieces[0].outline_mm[0])
+    EXPECT_FALSE(convex_overlap(l.box_mm, std::array<Vec2, 2>{edge.a, edge.b}, 0));
+}
+
 TEST(EdgeNumbers, ALeaderKeepsOffOtherLabelsAndTheirLeadersAndNeverLeavesThePiece) {
   // Both sides of one seam on the tiny base, and a second seam on the large face's top edge d-e whose
   // label sits above the leader's way: every label and leader stays inside the piece, apart.
