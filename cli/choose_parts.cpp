@@ -555,7 +555,9 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
   }
   if (ways != SlitOpening::Regrown) {
     Candidate all = derived_from(best, unfold::cut_open_at_slits(mesh, u, po));
-    if (lay_out_new(all) && !worth_opening(all, best)) {
+    if (lay_out_new(all) && worth_opening(all, best)) {
+      keep_if_better(all);
+    } else if (all.layout) {
       std::vector<int> tried = po.also_split;
       for (int credit_per_slit : {kSeamWithoutTabFlaws, 1}) {
         unfold::PartOptions some = po;
@@ -568,7 +570,6 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
         if (worth) break;
       }
     }
-    if (all.layout) keep_if_better(all);
   }
   if (kept) best = std::move(*kept);
 }

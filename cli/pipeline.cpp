@@ -23,10 +23,6 @@ constexpr double kUnfoldShareOfTimeLimit = 0.75;
 // there at 150 mm most labels need a larger size anyway (the remedy says which).
 constexpr int kMostFacesForSeamsWithRoom = 500;
 
-// The two unfoldings are judged by flaws (labels unclear and seams without a tab). Judged on labels
-// alone the second unfolding traded 54 fewer unclear labels for 5 more seams without a tab (882 -> 828,
-// 208 -> 213 over the label sweep's meshes); judged on both, fewer of each (docs/unfolding.md).
-
 void note_parts(unfold::UnfoldResult& result, const ChosenParts& parts) {
   if (parts.patches)
     result.notes.push_back(std::to_string(parts.split_pieces) +
@@ -76,7 +72,9 @@ ChosenParts choose_and_lay_out(const unfold::Mesh& mesh, const unfold::Unfolding
 // Where the chosen layout has more flaws than kFewFlawsShare of its labels, the mesh is unfolded again
 // with seams where labels have room and its parts chosen again; that choice replaces the first when it
 // takes fewer sheets, or as many with fewer flaws. Either way a full choice of parts: only their layouts
-// tell. Past the time limit the first stands.
+// tell. Past the time limit the first stands. Judged on labels alone the second unfolding traded 54 fewer
+// unclear labels for 5 more seams without a tab (882 -> 828, 208 -> 213 over the label sweep's meshes);
+// judged by flaws, fewer of each (docs/unfolding.md).
 void try_seams_with_room(UnfoldRun& run, const layout::LayoutOptions& o, ChosenParts& parts) {
   const unfold::Mesh& mesh = run.loaded.mesh;
   if (!parts.layout) parts.layout = layout::layout_sheets(parts.unfolding, o);

@@ -280,12 +280,11 @@ class LabelPlacer {
       if (!sides_[i].label) place_by_moving_others(sides_[i]);
     for (Clearance level : {Clearance::Clear, Clearance::Tight})
       place_on_leaders(hardest_first, level, Clearance::Leader);
-    for (std::size_t i : hardest_first)
-      if (!sides_[i].label) try_at_minimum(sides_[i], Clearance::OverFold);
-    place_on_leaders(hardest_first, Clearance::OverFold, Clearance::OverFold);
-    for (std::size_t i : hardest_first)
-      if (!sides_[i].label) try_at_minimum(sides_[i], Clearance::OverOutline);
-    place_on_leaders(hardest_first, Clearance::OverOutline, Clearance::OverOutline);
+    for (Clearance level : {Clearance::OverFold, Clearance::OverOutline}) {
+      for (std::size_t i : hardest_first)
+        if (!sides_[i].label) try_at_minimum(sides_[i], level);
+      place_on_leaders(hardest_first, level, level);
+    }
     std::vector<std::size_t> crowded;
     for (std::size_t i = 0; i < sides_.size(); ++i)
       if (!sides_[i].label) crowded.push_back(i);
