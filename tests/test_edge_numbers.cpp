@@ -495,22 +495,64 @@ TEST(EdgeNumbers, TabsOnTheSideWithoutRoomLeaveFewerLabelsWithoutAClearSpot) {
   EXPECT_LT(after, before) << "labels without a clear spot";
 }
 
+// spot_350 cut into parts at 110 mm, its seams numbered and its tabs planned: the labels to place.
+struct SpotInParts {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+  std::vector<int> numbers;
+  TabPlan tabs;
+  std::vector<std::vector<FoldLine>> folds;
+
+  SpotInParts() {
+    const auto& ex = test::unfolded_example("spot_350.obj");
+    pieces = scaled_pieces(ex.unfolding, 110 / ex.unfolding.model_extent);
+    seams = find_seams(ex.unfolding, pieces);
+    numbers = number_seams(pieces, seams);
+    tabs = plan_tabs(pieces, seams, TabOptions{});
+    folds = folds_of(ex.unfolding, pieces);
+  }
+  std::vector<Label> labels(const LabelOptions& o, std::span<const int> only_pieces = {}) const {
+    return place_labels(pieces, seams, numbers, tabs, folds, {}, o, {}, {}, only_pieces);
+  }
+};
+
+// Pieces' labels are placed on several threads at once: the same labels, in the same order.
+TEST(EdgeNumbers, LabelsPlacedOnSeveralThreadsAreThoseOfOneThreadInTheSameOrder) {
+  const SpotInParts spot;
+  ASSERT_GT(spot.pieces.size(), 4u);
+  LabelOptions one;
+  one.threads = 1;
+  const std::vector<Label> alone = spot.labels(one);
+  for (int threads : {2, 3, 8}) {
+    LabelOptions many = one;
+    many.threads = threads;
+    const std::vector<Label> shared = spot.labels(many);
+    ASSERT_EQ(shared.size(), alone.size()) << threads << " threads";
+    for (std::size_t i = 0; i < alone.size(); ++i) {
+      EXPECT_EQ(shared[i].seam, alone[i].seam) << "label " << i << ", " << threads << " threads";
+      EXPECT_EQ(shared[i].side, alone[i].side);
+      EXPECT_EQ(shared[i].text, alone[i].text);
+      EXPECT_EQ(shared[i].at_mm, alone[i].at_mm);
+      EXPECT_EQ(shared[i].dir, alone[i].dir);
+      EXPECT_EQ(shared[i].height_mm, alone[i].height_mm);
+      EXPECT_EQ(shared[i].box_mm, alone[i].box_mm);
+      EXPECT_EQ(shared[i].leader_mm, alone[i].leader_mm);
+      EXPECT_EQ(shared[i].crowded, alone[i].crowded);
+    }
+  }
+}
+
 // A caller that changed some pieces' tabs places only their labels again: they must come out exactly
 // as in a placement of every piece, since a label keeps clear of its own piece only.
 TEST(EdgeNumbers, LabelsPlacedForSomePiecesOnlyAreThoseOfAPlacementOfAll) {
-  const auto& ex = test::unfolded_example("spot_350.obj");
-  const auto pieces = scaled_pieces(ex.unfolding, 110 / ex.unfolding.model_extent);
-  ASSERT_GT(pieces.size(), 4u);
-  const auto seams = find_seams(ex.unfolding, pieces);
-  const auto numbers = number_seams(pieces, seams);
-  const TabPlan tabs = plan_tabs(pieces, seams, TabOptions{});
-  const auto folds = folds_of(ex.unfolding, pieces);
+  const SpotInParts spot;
+  ASSERT_GT(spot.pieces.size(), 4u);
   const LabelOptions o;
-  const std::vector<Label> all = place_labels(pieces, seams, numbers, tabs, folds, {}, o);
+  const std::vector<Label> all = spot.labels(o);
   std::vector<int> some;
-  for (int p = 0; p < static_cast<int>(pieces.size()); p += 3)
+  for (int p = 0; p < static_cast<int>(spot.pieces.size()); p += 3)
     some.push_back(p);
-  const std::vector<Label> part = place_labels(pieces, seams, numbers, tabs, folds, {}, o, {}, {}, some);
+  const std::vector<Label> part = spot.labels(o, some);
   std::vector<Label> expected;
   for (const Label& l : all)
     if (l.piece % 3 == 0) expected.push_back(l);

@@ -31,6 +31,24 @@ TEST(Tabs, OnAShortEdgeTheTabNarrowsInsteadOfComingToAPoint) {
   EXPECT_GT(quad[2].x - quad[1].x, 0.3) << "the outer side keeps some length";
 }
 
+// The planner gives up on a stretch of edge when the narrowest tab of each slant meets something:
+// that holds only because a narrower tab with the same slants lies inside a wider one.
+TEST(Tabs, ANarrowerTabWithTheSameSlantsLiesInsideTheWiderOne) {
+  const double slants[] = {0.3, std::numbers::pi / 4, std::numbers::pi / 3, 1.4};
+  for (double length : {2.0, 6.0, 25.0})
+    for (double slant_a : slants)
+      for (double slant_b : slants) {
+        const Polygon wide = tab_trapezoid({1, 2}, {1 + length * 0.6, 2 + length * 0.8}, 5, slant_a, slant_b);
+        for (double w : {0.5, 1.0, 2.5, 4.0}) {
+          const Polygon narrow =
+              tab_trapezoid({1, 2}, {1 + length * 0.6, 2 + length * 0.8}, w, slant_a, slant_b);
+          for (Vec2 p : narrow)
+            EXPECT_TRUE(inside_convex(wide, p, -1e-9))
+                << "length " << length << ", slants " << slant_a << " " << slant_b << ", width " << w;
+        }
+      }
+}
+
 TEST(Tabs, OnRealMeshesEachSeamHasAtMostOneTabAndNoneOverlapsItsPiece) {
   for (const char* name : {"spot_350.obj", "fish_350.obj", "penguin_500.obj"}) {
     const auto& ex = test::unfolded_example(name);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "foldkit/geom/parallel.hpp"
 #include "foldkit/layout/box_grid.hpp"
 #include "foldkit/layout/label_text.hpp"
 
@@ -876,18 +877,60 @@ int first_labelled_side(const TabPlan& tabs, std::size_t seam) {
   return !tabs.on_side(seam, 0) && tabs.on_side(seam, 1) ? 1 : 0;
 }
 
+namespace {
+
+// The pieces whose labels a call places, those with the most outline edges first, so that the longest
+// jobs start first when they run on several threads.
+std::vector<int> pieces_to_place(std::span<const ScaledPiece> pieces, std::span<const int> only_pieces) {
+  std::vector<int> placed(only_pieces.begin(), only_pieces.end());
+  if (only_pieces.empty()) {
+    placed.resize(pieces.size());
+    std::iota(placed.begin(), placed.end(), 0);
+  }
+  const auto edges = [&](int p) {
+    std::size_t n = 0;
+    for (const OutlineLoop& loop : pieces[static_cast<std::size_t>(p)].outline_mm)
+      n += loop.size();
+    return n;
+  };
+  std::stable_sort(placed.begin(), placed.end(), [&](int a, int b) { return edges(a) > edges(b); });
+  return placed;
+}
+
+}  // namespace
+
 std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<const Seam> seams,
                                 std::span<const int> numbers, const TabPlan& tabs,
                                 std::span<const std::vector<FoldLine>> fold_lines,
                                 std::span<const std::string> hints, const LabelOptions& o,
                                 const SeamTexts& texts, std::span<const std::vector<Polygon>> taken,
                                 std::span<const int> only_pieces) {
-  if (texts.full.size() >= seams.size())
-    return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken, only_pieces).run();
-  SeamTexts numbers_only;
-  for (int n : numbers)
-    numbers_only.full.push_back({number_text(n), number_text(n)});
-  return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, numbers_only, taken, only_pieces).run();
+  if (texts.full.size() < seams.size()) {
+    SeamTexts numbers_only;
+    for (int n : numbers)
+      numbers_only.full.push_back({number_text(n), number_text(n)});
+    return place_labels(pieces, seams, numbers, tabs, fold_lines, hints, o, numbers_only, taken, only_pieces);
+  }
+  const auto place = [&](std::span<const int> these) {
+    return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken, these).run();
+  };
+  const std::vector<int> placed = pieces_to_place(pieces, only_pieces);
+  const int threads = std::min(resolve_threads(o.threads), static_cast<int>(placed.size()));
+  // With hints a seam's step mark goes on one of its two sides, which may lie in two pieces.
+  if (!hints.empty() || threads < 2) return place(only_pieces);
+  std::vector<std::vector<Label>> by_piece(placed.size());
+  run_parallel(static_cast<int>(placed.size()), threads,
+               [&](int k) { by_piece[k] = place(std::span<const int>(&placed[k], 1)); });
+  // In the order of one placement of all: the seams', the side with the tab first.
+  std::vector<Label> labels;
+  for (std::vector<Label>& some : by_piece)
+    std::move(some.begin(), some.end(), std::back_inserter(labels));
+  const auto order = [&](const Label& l) {
+    return std::make_pair(l.seam.index(), l.side != first_labelled_side(tabs, l.seam.index()));
+  };
+  std::sort(labels.begin(), labels.end(),
+            [&](const Label& a, const Label& b) { return order(a) < order(b); });
+  return labels;
 }
 
 }  // namespace foldkit::layout

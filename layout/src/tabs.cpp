@@ -77,34 +77,57 @@ std::vector<int> planning_order(std::size_t seam_count, std::span<const int> ord
   return sequence;
 }
 
+// tab_trapezoid with the cotangents of its slants at a and b: a tab is tried at many widths with the
+// same slants, and the tangents were a tenth of planning the tabs of a large part.
+Polygon trapezoid_of_cots(Vec2 a, Vec2 b, double w, std::array<double, 2> cot) {
+  // Keep a short outer side: a pointed tab is hard to glue and its tip tears.
+  constexpr double kMostSlantShare = 0.9;  // of the edge's length, both slants together
+  const double length = norm(b - a);
+  const Vec2 dir = (b - a) / length;
+  const Vec2 out{dir.y, -dir.x};  // right of a->b: away from the piece
+  w = std::min(w, kMostSlantShare * length / (cot[0] + cot[1]));
+  return {a, a + out * w + dir * (w * cot[0]), b + out * w - dir * (w * cot[1]), b};
+}
+
 // The largest share of the free angle at each end of one side's edge a tab may take (corner_share).
 struct EdgeCorners {
   double at_a_rad = 0, at_b_rad = 0;
 };
 
-// A grid over a piece's triangles: a tab is tried many times (widths, slants, stretches of its edge), and
-// each try tests only the triangles near it, not all of a large part's.
-BoxGrid triangle_grid(const ScaledPiece& piece) {
-  Box2 region;
-  for (const Triangle2& t : piece.triangles_mm)
-    region.add(bounds(t));
-  // Cells of about a triangle's size: a few triangles per cell on an even mesh.
+// Grids over a piece's triangles and tabs: a tab is tried many times (widths, slants, stretches of its
+// edge), and each try tests only the triangles and tabs near it, not all of a large part's. Cells of
+// about a triangle's size: a few triangles per cell on an even mesh.
+double piece_cell_mm(const ScaledPiece& piece, const Box2& region) {
   const double n = std::max<double>(1, static_cast<double>(piece.triangles_mm.size()));
-  const double cell_mm = region.empty() ? 1.0 : std::sqrt(region.width() * region.height() / n);
-  BoxGrid grid(region, cell_mm);
-  for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
-    grid.insert(static_cast<int>(k), bounds(piece.triangles_mm[k]));
-  return grid;
+  return region.empty() ? 1.0 : std::sqrt(region.width() * region.height() / n);
 }
 
-// What one piece holds while tabs are planned: its triangles (by a grid of their boxes) and the tabs
-// placed so far (their collision footprints), per outline edge whether it carries a tab.
+// What one piece holds while tabs are planned: its triangles and the tabs placed so far (their collision
+// footprints), each through a grid of their boxes, and per outline edge whether it carries a tab. A tab
+// taken away stays in the grid with no seam (kNoSeam).
 struct PieceState {
+  static constexpr int kNoSeam = -1;
   BoxGrid triangles{Box2{}, 1.0};
+  BoxGrid tabs{Box2{}, 1.0};
   std::vector<Polygon> tab_shapes;
-  std::vector<Box2> tab_box;
-  std::vector<int> tab_seam;               // the seam of each tab shape
+  std::vector<int> tab_seam;               // the seam of each tab shape, kNoSeam once taken away
   std::vector<std::vector<char>> has_tab;  // per loop, per outline index
+
+  PieceState(const ScaledPiece& piece, double tab_reach_mm) {
+    Box2 region;
+    for (const Triangle2& t : piece.triangles_mm)
+      region.add(bounds(t));
+    const double cell_mm = piece_cell_mm(piece, region);
+    triangles = BoxGrid(region, cell_mm);
+    for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
+      triangles.insert(static_cast<int>(k), bounds(piece.triangles_mm[k]));
+    if (!region.empty())
+      region =
+          Box2{region.min - Vec2{tab_reach_mm, tab_reach_mm}, region.max + Vec2{tab_reach_mm, tab_reach_mm}};
+    tabs = BoxGrid(region, cell_mm);
+    for (const OutlineLoop& loop : piece.outline_mm)
+      has_tab.emplace_back(loop.size(), 0);
+  }
 };
 
 // Plans the tabs seam by seam: place() puts one seam's tab on the side that keeps alternation and
@@ -114,21 +137,15 @@ class TabPlanner {
  public:
   TabPlanner(std::span<const ScaledPiece> pieces, std::span<const Seam> seams, const TabOptions& options,
              std::span<const int> wanted_sides)
-      : pieces_(pieces),
-        seams_(seams),
-        o_(options),
-        wanted_sides_(wanted_sides),
-        state_(pieces.size()),
-        seam_at_(pieces.size()) {
+      : pieces_(pieces), seams_(seams), o_(options), wanted_sides_(wanted_sides), seam_at_(pieces.size()) {
     plan_.tab_of_seam.resize(seams.size());
     plan_.second_half_of_seam.resize(seams.size());
     settled_.assign(seams.size(), 0);
+    state_.reserve(pieces.size());
     for (std::size_t p = 0; p < pieces.size(); ++p) {
-      state_[p].triangles = triangle_grid(pieces[p]);
-      for (const OutlineLoop& loop : pieces[p].outline_mm) {
-        state_[p].has_tab.emplace_back(loop.size(), 0);
+      state_.emplace_back(pieces[p], options.width_mm);
+      for (const OutlineLoop& loop : pieces[p].outline_mm)
         seam_at_[p].emplace_back(loop.size(), -1);
-      }
     }
     for (std::size_t i = 0; i < seams.size(); ++i)
       for (const SeamSide& s : seams[i].sides)
@@ -232,11 +249,13 @@ class TabPlanner {
     const double lp = first_half ? free.at_a_rad : std::numbers::pi;
     const double lq = first_half ? std::numbers::pi : free.at_b_rad;
     const double least = std::max(std::min(o_.label_width_mm, o_.width_mm), o_.min_width_mm);
+    const auto steep_first = slants(lp, lq, true);
+    if (!any_width_may_fit(s.piece, p, q, steep_first, least)) return std::nullopt;
     for (double w : tab_widths_to_try(half_length, o_)) {
       if (w < least - kTolerance) break;
-      if (auto tab = fit_trapezoid(s.piece, k, p, q, lp, lq, w, true)) return tab;
+      if (auto tab = fit_trapezoid(s.piece, k, p, q, steep_first, w)) return tab;
     }
-    if (auto tab = fit_trapezoid(s.piece, k, p, q, lp, lq, least, true)) return tab;
+    if (auto tab = fit_trapezoid(s.piece, k, p, q, steep_first, least)) return tab;
     return std::nullopt;
   }
 
@@ -267,8 +286,9 @@ class TabPlanner {
     const int index = tab.seam.index();
     const SeamSide& s = seams_[index].sides[tab.side];
     PieceState& ps = state_[s.piece];
-    ps.tab_shapes.push_back(test_shape(tab.quad_mm));
-    ps.tab_box.push_back(bounds_of(ps.tab_shapes.back()));
+    Polygon shape = test_shape(tab.quad_mm);
+    ps.tabs.insert(static_cast<int>(ps.tab_shapes.size()), bounds_of(shape));
+    ps.tab_shapes.push_back(std::move(shape));
     ps.tab_seam.push_back(index);
     ps.has_tab[s.loop][s.index] = 1;
     (second_half ? plan_.second_half_of_seam : plan_.tab_of_seam)[index] = std::move(tab);
@@ -280,13 +300,8 @@ class TabPlanner {
       if (!*placed) continue;
       const SeamSide& s = seams_[index].sides[(*placed)->side];
       PieceState& ps = state_[s.piece];
-      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
-        if (ps.tab_seam[k] == index) {
-          ps.tab_shapes.erase(ps.tab_shapes.begin() + static_cast<std::ptrdiff_t>(k));
-          ps.tab_box.erase(ps.tab_box.begin() + static_cast<std::ptrdiff_t>(k));
-          ps.tab_seam.erase(ps.tab_seam.begin() + static_cast<std::ptrdiff_t>(k));
-          break;
-        }
+      const auto k = std::find(ps.tab_seam.begin(), ps.tab_seam.end(), index);
+      if (k != ps.tab_seam.end()) *k = PieceState::kNoSeam;
       ps.has_tab[s.loop][s.index] = 0;
       placed->reset();
     }
@@ -307,8 +322,10 @@ class TabPlanner {
     for (const SeamSide& side : seams_[index].sides) {
       if (side.piece < 0) continue;
       const PieceState& ps = state_[side.piece];
-      for (std::size_t k = 0; k < ps.tab_seam.size(); ++k)
-        if (reach.overlaps(ps.tab_box[k])) near.push_back(ps.tab_seam[k]);
+      ps.tabs.visit(reach, [&](int k) {
+        if (ps.tab_seam[k] != PieceState::kNoSeam) near.push_back(ps.tab_seam[k]);
+        return true;
+      });
     }
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
@@ -323,10 +340,10 @@ class TabPlanner {
     const bool clear_of_triangles = ps.triangles.visit(
         box, [&](int k) { return !convex_overlap(shape, piece.triangles_mm[k], kOverlapTolerance_mm); });
     if (!clear_of_triangles) return false;
-    for (std::size_t k = 0; k < ps.tab_shapes.size(); ++k)
-      if (box.overlaps(ps.tab_box[k]) && convex_overlap(shape, ps.tab_shapes[k], kOverlapTolerance_mm))
-        return false;
-    return true;
+    return ps.tabs.visit(box, [&](int k) {
+      return ps.tab_seam[k] == PieceState::kNoSeam ||
+             !convex_overlap(shape, ps.tab_shapes[k], kOverlapTolerance_mm);
+    });
   }
 
   // The share of a corner's free angle a tab may take: all of it (less a margin) when the neighbour
@@ -365,21 +382,43 @@ class TabPlanner {
     const bool steep_first = wanted_side(index) == k;
     const double label_width = std::min(o_.label_width_mm, o_.width_mm);
     if (steep_first && label_width > widths.front()) widths.insert(widths.begin(), label_width);
-    for (double w : widths)
-      if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, free.at_a_rad, free.at_b_rad, w, steep_first))
-        return tab;
+    const auto edge_slants = slants(free.at_a_rad, free.at_b_rad, steep_first);
+    if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, edge_slants, widths.front())) return tab;
+    if (!any_width_may_fit(s.piece, e.a, e.b, edge_slants, widths.back()))
+      return best_stretch(s.piece, k, e, free, widths);
+    for (double w : std::span(widths).subspan(1))
+      if (auto tab = fit_trapezoid(s.piece, k, e.a, e.b, edge_slants, w)) return tab;
     return best_stretch(s.piece, k, e, free, widths);
   }
 
-  // A tab along p->q (the edge or a stretch of it) of width w whose slants are at most limit_p,
-  // limit_q: gentle slants first; steeper ones (still within the corner's share) when the edge is short.
-  std::optional<Tab> fit_trapezoid(int piece, int k, Vec2 p, Vec2 q, double limit_p, double limit_q, double w,
-                                   bool steep_first = false) const {
+  // The slants a tab along p->q may take, as cotangents at p and q: each slant cap (gentle first, or
+  // steep first) within the free angles limit_p and limit_q.
+  std::array<std::array<double, 2>, 3> slants(double limit_p, double limit_q, bool steep_first) const {
     std::array<double, 3> caps{o_.max_slant_rad, kSteeperSlants_rad[0], kSteeperSlants_rad[1]};
     if (steep_first) std::reverse(caps.begin(), caps.end());
-    for (double cap : caps) {
-      const double slant_p = std::min(cap, limit_p), slant_q = std::min(cap, limit_q);
-      Polygon quad = tab_trapezoid(p, q, w, slant_p, slant_q);
+    std::array<std::array<double, 2>, 3> cots;
+    for (std::size_t i = 0; i < caps.size(); ++i)
+      cots[i] = {1 / std::tan(std::min(caps[i], limit_p)), 1 / std::tan(std::min(caps[i], limit_q))};
+    return cots;
+  }
+
+  // Whether some tab along p->q with one of `slants` and at least width w could fit. A narrower tab with
+  // the same slants lies inside a wider one, so where the narrowest of each slant meets an obstacle,
+  // every wider one does: on a slit, which takes no tab, the widths of 35 stretches were nine tenths
+  // of planning a large part's tabs.
+  bool any_width_may_fit(int piece, Vec2 p, Vec2 q, const std::array<std::array<double, 2>, 3>& slants,
+                         double w) const {
+    return std::any_of(slants.begin(), slants.end(), [&](const std::array<double, 2>& cot) {
+      return fits(piece, test_shape(trapezoid_of_cots(p, q, w, cot)));
+    });
+  }
+
+  // A tab along p->q (the edge or a stretch of it) of width w with one of `slants` (slants()): gentle
+  // slants first; steeper ones (still within the corner's share) when the edge is short.
+  std::optional<Tab> fit_trapezoid(int piece, int k, Vec2 p, Vec2 q,
+                                   const std::array<std::array<double, 2>, 3>& slants, double w) const {
+    for (const std::array<double, 2>& cot : slants) {
+      Polygon quad = trapezoid_of_cots(p, q, w, cot);
       const double actual = std::fabs(cross(normalized(q - p), quad[1] - p));
       if (actual < std::max(kKeptWidthShare * w, o_.min_width_mm - kTolerance)) continue;
       if (fits(piece, test_shape(quad))) return Tab{SeamId{}, k, piece, std::move(quad), actual};
@@ -403,10 +442,13 @@ class TabPlanner {
         const Vec2 p = e.a + (e.b - e.a) * t0, q = e.a + (e.b - e.a) * t1;
         const double lp = t0 < kTolerance ? free.at_a_rad : std::numbers::pi,
                      lq = t1 > 1 - kTolerance ? free.at_b_rad : std::numbers::pi;
+        const auto stretch_slants = slants(lp, lq, false);
+        const double narrowest = std::min(widths.back(), o_.width_per_length * stretch + o_.min_width_mm);
+        if (!any_width_may_fit(piece, p, q, stretch_slants, narrowest)) continue;
         for (double w : widths) {
           if (w * stretch <= best_area) break;
           const double narrowed = std::min(w, o_.width_per_length * stretch + o_.min_width_mm);
-          if (auto tab = fit_trapezoid(piece, k, p, q, lp, lq, narrowed)) {
+          if (auto tab = fit_trapezoid(piece, k, p, q, stretch_slants, narrowed)) {
             const double area = signed_area(tab->quad_mm);
             if (area > best_area) {
               best_area = area;
@@ -453,14 +495,7 @@ std::vector<const Tab*> TabPlan::all() const {
 }
 
 Polygon tab_trapezoid(Vec2 a, Vec2 b, double w, double slant_a, double slant_b) {
-  // Keep a short outer side: a pointed tab is hard to glue and its tip tears.
-  constexpr double kMostSlantShare = 0.9;  // of the edge's length, both slants together
-  const double length = norm(b - a);
-  const Vec2 dir = (b - a) / length;
-  const Vec2 out{dir.y, -dir.x};  // right of a->b: away from the piece
-  const double ca = 1 / std::tan(slant_a), cb = 1 / std::tan(slant_b);
-  w = std::min(w, kMostSlantShare * length / (ca + cb));
-  return {a, a + out * w + dir * (w * ca), b + out * w - dir * (w * cb), b};
+  return trapezoid_of_cots(a, b, w, {1 / std::tan(slant_a), 1 / std::tan(slant_b)});
 }
 
 std::vector<double> tab_widths_to_try(double edge_length_mm, const TabOptions& o) {

@@ -39,6 +39,9 @@ struct LabelOptions {
   /// point of its box), inside its piece, tied to the edge by a leader line: read clearly a few
   /// millimetres away rather than over a line. 0: no leaders.
   double leader_reach_mm = 16;
+  /// Threads that place the labels of different pieces at once (0: all cores). Without hints a piece's
+  /// labels depend on that piece alone, so the labels are the same whatever the count.
+  int threads = 0;
 };
 
 /// A label in its piece's frame (mm, y up): text from `at_mm` (its baseline) along `dir`, glyphs growing
