@@ -879,9 +879,13 @@ int first_labelled_side(const TabPlan& tabs, std::size_t seam) {
 
 namespace {
 
-// The pieces whose labels a call places, those with the most outline edges first, so that the longest
-// jobs start first when they run on several threads.
-std::vector<int> pieces_to_place(std::span<const ScaledPiece> pieces, std::span<const int> only_pieces) {
+// The pieces whose labels a call places, in groups for `threads` threads: a few groups per thread, of
+// about the same number of outline edges (the largest piece first into the lightest group), so that one
+// large piece does not leave the other threads idle. Few groups, not one per piece: each placer is
+// given every piece, so a model of thousands of pieces would cost their square.
+std::vector<std::vector<int>> piece_groups(std::span<const ScaledPiece> pieces,
+                                           std::span<const int> only_pieces, int threads) {
+  constexpr int kGroupsPerThread = 4;
   std::vector<int> placed(only_pieces.begin(), only_pieces.end());
   if (only_pieces.empty()) {
     placed.resize(pieces.size());
@@ -894,7 +898,15 @@ std::vector<int> pieces_to_place(std::span<const ScaledPiece> pieces, std::span<
     return n;
   };
   std::stable_sort(placed.begin(), placed.end(), [&](int a, int b) { return edges(a) > edges(b); });
-  return placed;
+  const std::size_t count = std::min(placed.size(), static_cast<std::size_t>(kGroupsPerThread) * threads);
+  std::vector<std::vector<int>> groups(count);
+  std::vector<std::size_t> load(count, 0);
+  for (int p : placed) {
+    const std::size_t lightest = std::min_element(load.begin(), load.end()) - load.begin();
+    groups[lightest].push_back(p);
+    load[lightest] += edges(p);
+  }
+  return groups;
 }
 
 }  // namespace
@@ -914,16 +926,16 @@ std::vector<Label> place_labels(std::span<const ScaledPiece> pieces, std::span<c
   const auto place = [&](std::span<const int> these) {
     return LabelPlacer(pieces, seams, tabs, fold_lines, hints, o, texts, taken, these).run();
   };
-  const std::vector<int> placed = pieces_to_place(pieces, only_pieces);
-  const int threads = std::min(resolve_threads(o.threads), static_cast<int>(placed.size()));
+  const int threads = resolve_threads(o.threads);
   // With hints a seam's step mark goes on one of its two sides, which may lie in two pieces.
   if (!hints.empty() || threads < 2) return place(only_pieces);
-  std::vector<std::vector<Label>> by_piece(placed.size());
-  run_parallel(static_cast<int>(placed.size()), threads,
-               [&](int k) { by_piece[k] = place(std::span<const int>(&placed[k], 1)); });
+  const std::vector<std::vector<int>> groups = piece_groups(pieces, only_pieces, threads);
+  if (groups.size() < 2) return place(only_pieces);
+  std::vector<std::vector<Label>> by_group(groups.size());
+  run_parallel(static_cast<int>(groups.size()), threads, [&](int k) { by_group[k] = place(groups[k]); });
   // In the order of one placement of all: the seams', the side with the tab first.
   std::vector<Label> labels;
-  for (std::vector<Label>& some : by_piece)
+  for (std::vector<Label>& some : by_group)
     std::move(some.begin(), some.end(), std::back_inserter(labels));
   const auto order = [&](const Label& l) {
     return std::make_pair(l.seam.index(), l.side != first_labelled_side(tabs, l.seam.index()));
