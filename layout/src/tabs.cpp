@@ -94,14 +94,6 @@ struct EdgeCorners {
   double at_a_rad = 0, at_b_rad = 0;
 };
 
-// Grids over a piece's triangles and tabs: a tab is tried many times (widths, slants, stretches of its
-// edge), and each try tests only the triangles and tabs near it, not all of a large part's. Cells of
-// about a triangle's size: a few triangles per cell on an even mesh.
-double piece_cell_mm(const ScaledPiece& piece, const Box2& region) {
-  const double n = std::max<double>(1, static_cast<double>(piece.triangles_mm.size()));
-  return region.empty() ? 1.0 : std::sqrt(region.width() * region.height() / n);
-}
-
 // What one piece holds while tabs are planned: its triangles and the tabs placed so far (their collision
 // footprints), each through a grid of their boxes, and per outline edge whether it carries a tab. A tab
 // taken away stays in the grid with no seam (kNoSeam).
@@ -117,7 +109,10 @@ struct PieceState {
     Box2 region;
     for (const Triangle2& t : piece.triangles_mm)
       region.add(bounds(t));
-    const double cell_mm = piece_cell_mm(piece, region);
+    // Grids over the triangles and tabs: a tab is tried many times (widths, slants, stretches of its
+    // edge), and each try tests only what is near it. Cells of about a triangle's size.
+    const double n = std::max<double>(1, static_cast<double>(piece.triangles_mm.size()));
+    const double cell_mm = region.empty() ? 1.0 : std::sqrt(region.width() * region.height() / n);
     triangles = BoxGrid(region, cell_mm);
     for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
       triangles.insert(static_cast<int>(k), bounds(piece.triangles_mm[k]));
