@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -233,4 +234,33 @@ TEST(AtomicFile, PendingTemporariesAreRemovedForAProcessEndingOnASignal) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
   EXPECT_EQ(count_entries(dir), 0);
+}
+
+TEST(AtomicFile, ATemporaryBeingCreatedWhenTheSignalComesIsRemovedToo) {
+  // The signal's clean-up may run while another thread is between creating its temporary and
+  // registering it. A child per trial creates and drops temporaries in a loop on one thread while its
+  // other thread cleans up after a short, varying delay; nothing may be left in the directory.
+  constexpr int kTrials = 40;
+  int left_behind = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const fs::path dir = foldkit::test::temp_dir("atomic-race-" + std::to_string(trial));
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::thread writer([&dir] {
+        for (;;) {
+          AtomicFile f(dir / "sheet.png");
+          f.stream() << "x";
+        }
+      });
+      std::this_thread::sleep_for(std::chrono::microseconds(500 + 97 * trial));
+      foldkit::devices::remove_pending_temporaries();
+      ::_exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    if (count_entries(dir) != 0) ++left_behind;
+  }
+  EXPECT_EQ(left_behind, 0) << "of " << kTrials << " trials";
 }

@@ -42,11 +42,6 @@ PendingTemporaries& pending() {
   return *instance;
 }
 
-void register_temp(const fs::path& p) {
-  std::lock_guard lock(pending().mutex);
-  pending().paths.insert(p.string());
-}
-
 void unregister_temp(const fs::path& p) {
   std::lock_guard lock(pending().mutex);
   pending().paths.erase(p.string());
@@ -74,6 +69,23 @@ fs::path make_hidden_file(const fs::path& destination, const std::string& target
   (void)::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   return fs::path(buffer.data());
+}
+
+// Created, opened and registered under one lock. A signal's clean-up that ran between creating and
+// registering would miss a file that exists; one that ran before the stream opens the file by name
+// would see it created again after its unlink.
+fs::path open_registered_temporary(const fs::path& destination, const std::string& target,
+                                   std::ofstream& stream) {
+  std::lock_guard lock(pending().mutex);
+  fs::path temp = make_hidden_file(destination, target, ".tmp");
+  stream.open(temp, std::ios::binary | std::ios::trunc);
+  if (!stream) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    throw OutputError(target, "cannot open temporary file: " + errno_text(err));
+  }
+  pending().paths.insert(temp.string());
+  return temp;
 }
 
 void write_all(int fd, const std::string& bytes, const std::string& target) {
@@ -181,15 +193,7 @@ AtomicFile::AtomicFile(fs::path target) : state_(std::make_unique<State>()) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
     throw OutputError(s.target.string(), "directory " + dir.string() + " does not exist");
-  s.temp = make_hidden_file(s.destination.path, s.target.string(), ".tmp");
-  register_temp(s.temp);
-  s.file.open(s.temp, std::ios::binary | std::ios::trunc);
-  if (!s.file) {
-    const int err = errno;
-    ::unlink(s.temp.c_str());
-    unregister_temp(s.temp);
-    throw OutputError(s.target.string(), "cannot open temporary file: " + errno_text(err));
-  }
+  s.temp = open_registered_temporary(s.destination.path, s.target.string(), s.file);
 }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept = default;
