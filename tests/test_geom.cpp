@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "foldkit/geom/predicates.hpp"
+#include "foldkit/geom/vec.hpp"
 
 using namespace foldkit;
 
@@ -90,4 +91,19 @@ TEST(ConvexOverlap, AnswersAsTheDistanceFormOnShapesTouchingAtTheTolerance) {
 TEST(SegmentsCross, TouchingAtAnEndpointIsNotACrossing) {
   EXPECT_FALSE(segments_cross({0, 0}, {1, 0}, {1, 0}, {1, 1}, 1e-12));
   EXPECT_TRUE(segments_cross({0, 0}, {2, 0}, {1, -1}, {1, 1}, 1e-12));
+}
+
+TEST(Box2, GrownMovesEverySideOutAndANegativeAmountMovesThemIn) {
+  Box2 b;
+  b.add(Vec2{1, 2});
+  b.add(Vec2{4, 3});
+  const Box2 out = grown(b, 0.5);
+  EXPECT_EQ(out.min.x, 0.5);
+  EXPECT_EQ(out.min.y, 1.5);
+  EXPECT_EQ(out.max.x, 4.5);
+  EXPECT_EQ(out.max.y, 3.5);
+  const Box2 in = grown(b, -0.25);
+  EXPECT_DOUBLE_EQ(in.width(), 2.5);
+  EXPECT_DOUBLE_EQ(in.height(), 0.5);
+  EXPECT_TRUE(grown(b, -1).empty()) << "moved in past its height";
 }

@@ -51,11 +51,7 @@ Box2 piece_region(const ScaledPiece& piece) {
   for (const Triangle2& t : piece.triangles_mm)
     for (Vec2 v : t)
       b.add(v);
-  return Box2{b.min - Vec2{kGridBorder_mm, kGridBorder_mm}, b.max + Vec2{kGridBorder_mm, kGridBorder_mm}};
-}
-
-Box2 grown(Box2 b, double d) {
-  return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
+  return grown(b, kGridBorder_mm);
 }
 
 // The width the face beside `edge` leaves next to a label of `width` at the minimum height: a triangle

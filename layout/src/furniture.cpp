@@ -29,10 +29,6 @@ Polygon rect(const Box2& b) {
   return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
 }
 
-Box2 grown(const Box2& b, double d) {
-  return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
-}
-
 // The width of a furniture text: set in the sheet's font, not the labels' narrow family, whose advances
 // label_width_mm knows (DejaVu Sans' digits are 0.87 of the cap height against 0.67).
 double sheet_text_width_mm(const std::string& text, double cap_mm) {

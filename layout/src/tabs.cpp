@@ -116,9 +116,7 @@ struct PieceState {
     triangles = BoxGrid(region, cell_mm);
     for (std::size_t k = 0; k < piece.triangles_mm.size(); ++k)
       triangles.insert(static_cast<int>(k), bounds(piece.triangles_mm[k]));
-    if (!region.empty())
-      region =
-          Box2{region.min - Vec2{tab_reach_mm, tab_reach_mm}, region.max + Vec2{tab_reach_mm, tab_reach_mm}};
+    if (!region.empty()) region = grown(region, tab_reach_mm);
     tabs = BoxGrid(region, cell_mm);
     for (const OutlineLoop& loop : piece.outline_mm)
       has_tab.emplace_back(loop.size(), 0);
@@ -311,8 +309,7 @@ class TabPlanner {
       reach.add(e.a);
       reach.add(e.b);
     }
-    const Vec2 margin{o_.width_mm, o_.width_mm};
-    reach = Box2{reach.min - margin, reach.max + margin};
+    reach = grown(reach, o_.width_mm);
     std::vector<int> near;
     for (const SeamSide& side : seams_[index].sides) {
       if (side.piece < 0) continue;

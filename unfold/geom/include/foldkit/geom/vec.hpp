@@ -104,4 +104,9 @@ struct Box2 {
   }
 };
 
+/// `b` with every side moved out by `d` (in by a negative `d`).
+inline Box2 grown(const Box2& b, double d) {
+  return Box2{b.min - Vec2{d, d}, b.max + Vec2{d, d}};
+}
+
 }  // namespace foldkit
