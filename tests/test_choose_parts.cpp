@@ -117,13 +117,13 @@ TEST(ChooseParts, PartsHoldingSlitsAreGrownAroundThemWhereThatCostsNoSheetAndAtM
 }
 
 TEST(ChooseParts, SlitsAreOpenedWhereTheTabsGainedOutnumberTheLabelsTheyLeaveUnclear) {
-  // Fish at 160 mm: opened, 3 darts take tabs and one label of the new seams finds no clear spot.
+  // Penguin at 100 mm: opened, 7 darts take tabs and 5 labels of the new seams find no clear spot.
   cli::ChooseOptions closed;
   closed.join_on_a_sheet = false;
   cli::ChooseOptions open = closed;
   closed.open_slits = cli::SlitOpening::None;
-  const cli::ChosenParts before = chosen_for("fish_350.obj", 160, closed);
-  const cli::ChosenParts after = chosen_for("fish_350.obj", 160, open);
+  const cli::ChosenParts before = chosen_for("penguin_500.obj", 100, closed);
+  const cli::ChosenParts after = chosen_for("penguin_500.obj", 100, open);
   ASSERT_TRUE(before.layout && after.layout);
   const int tabs_gained = before.layout->overall.dropped_tabs - after.layout->overall.dropped_tabs;
   const int labels_lost = after.layout->label_audit.unclear() - before.layout->label_audit.unclear();
@@ -131,14 +131,14 @@ TEST(ChooseParts, SlitsAreOpenedWhereTheTabsGainedOutnumberTheLabelsTheyLeaveUnc
   EXPECT_GT(tabs_gained, labels_lost);
   EXPECT_LE(after.unfolding.piece_count - before.unfolding.piece_count, tabs_gained);
   EXPECT_LE(sheets_with_pieces(*after.layout), sheets_with_pieces(*before.layout));
-  const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
+  const auto& ex = test::unfolded_example("penguin_500.obj", unfold::Method::Search);
   EXPECT_TRUE(unfold::check_unfolding(ex.mesh, after.unfolding).empty());
 }
 
 TEST(ChooseParts, ASeamGivenATabIsWorthMoreThanOneLabelLeftUnclear) {
-  // Fish at 95 mm: opening the slits gives five seams a tab and leaves six more labels unclear; penguin at
-  // 175 mm: one for one. Counted alike the trades were refused, at kSeamWithoutTabFlaws they are taken.
-  for (const auto& [name, size_mm] : {std::pair{"fish_350.obj", 95.0}, std::pair{"penguin_500.obj", 175.0}}) {
+  // Fish at 150 mm: opening the slits gives two seams a tab and leaves three more labels unclear; bob at
+  // 85 mm: five for five. Counted alike both trades were refused, at kSeamWithoutTabFlaws both are taken.
+  for (const auto& [name, size_mm] : {std::pair{"fish_350.obj", 150.0}, std::pair{"bob_350.obj", 85.0}}) {
     SCOPED_TRACE(name);
     cli::ChooseOptions open;
     open.join_on_a_sheet = false;
@@ -160,19 +160,19 @@ TEST(ChooseParts, ASeamGivenATabIsWorthMoreThanOneLabelLeftUnclear) {
 }
 
 TEST(ChooseParts, WhereCuttingEveryPartOpenIsNotWorthItThePartsWhoseCutsGainMoreThanTheyCostAreCutAlone) {
-  // Fish at 130 mm: cut open at every slit it takes 11 parts and costs labels in the small ones (26
-  // unclear where 15 were); only the parts whose cuts gain more than they cost are cut.
+  // Fish at 105 mm: cut open at every slit it takes 9 parts where it had 5; only the parts whose cuts gain
+  // more than they cost are cut (7 parts).
   cli::ChooseOptions closed;
   closed.join_on_a_sheet = false;
   cli::ChooseOptions cut = closed;
   cut.open_slits = cli::SlitOpening::Cut;
   closed.open_slits = cli::SlitOpening::None;
-  const cli::ChosenParts before = chosen_for("fish_350.obj", 130, closed);
-  const cli::ChosenParts after = chosen_for("fish_350.obj", 130, cut);
+  const cli::ChosenParts before = chosen_for("fish_350.obj", 105, closed);
+  const cli::ChosenParts after = chosen_for("fish_350.obj", 105, cut);
   ASSERT_TRUE(before.layout && after.layout);
   const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
   unfold::PartOptions every_part;
-  every_part.mm_per_unit = 130 / ex.unfolding.model_extent;
+  every_part.mm_per_unit = 105 / ex.unfolding.model_extent;
   layout::LayoutOptions o;
   every_part.slit_gap_mm = layout::narrow_slit_gap_mm(o);
   const unfold::Unfolding all_cut = unfold::cut_open_at_slits(ex.mesh, before.unfolding, every_part);
@@ -326,11 +326,12 @@ TEST(ChooseParts, PatchesGrownOverTheSurfaceAreKeptWhenPartsCutFromTheNetNeedASh
 }
 
 TEST(ChooseParts, PatchesThatLeaveManyLabelsUnclearAreNotWorthTheSheetTheySave) {
-  // The fish at 150 mm: patches fit one sheet where the net's parts take two, but only with tabs planned
-  // as if there were no labels; the labels of their many seams through small faces then cross lines.
-  const auto& ex = test::unfolded_example("fish_350.obj", unfold::Method::Search);
+  // The penguin at 130 mm: patches fit one sheet where the net's parts take two, but only with tabs
+  // planned as if there were no labels; the labels of their many seams through small faces then cross
+  // lines (44 of 544, where the two sheets leave 9).
+  const auto& ex = test::unfolded_example("penguin_500.obj", unfold::Method::Search);
   layout::LayoutOptions o;
-  o.size_mm = 150;
+  o.size_mm = 130;
   layout::LayoutOptions plain_tabs = o;
   plain_tabs.tab_sides_for_labels = plain_tabs.tabs_for_labels = plain_tabs.split_tabs_for_labels = false;
   // The densest of the patches choose_parts tries (each fraction of the room).

@@ -42,14 +42,14 @@ layout::LayoutResult first_choice(const cli::UnfoldRun& run, const layout::Layou
 }  // namespace
 
 TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptWhenItHasFewerFlaws) {
-  // fish_350 at 140 mm: its first unfolding leaves labels without a clear spot even on leaders; the
-  // second one's seams run where they have room.
+  // fish_350 at 125 mm: its first unfolding leaves labels without a clear spot even on leaders (7); the
+  // second one's seams run where they have room (4).
   layout::LayoutOptions o = at_150_mm();
-  o.size_mm = 140;
+  o.size_mm = 125;
   cli::UnfoldRun run = unfolded_for_print("fish_350.obj", o);
   const layout::LayoutResult first = first_choice(run, o);
   ASSERT_GT(cli::flaws(first), cli::kFewFlawsShare * first.label_audit.labels)
-      << "fish_350 at 140 mm leaves some labels unclear";
+      << "fish_350 at 125 mm leaves some labels unclear";
   const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Balanced) << "the second unfolding printed";

@@ -37,7 +37,10 @@ constexpr std::array<double, 2> kAcrossLifts{0, 0.5};
 // (turned from straight into the face, alternately either way); its bar along the edge this long, at
 // most this share of the edge.
 constexpr double kLeaderStep_mm = 1.0;
-constexpr std::array<double, 9> kLeaderTurns_rad{0, 0.5, -0.5, 1.0, -1.0, 1.57, -1.57, 2.1, -2.1};
+// A gap between two lines that meet at a small face's apex is often narrower than the next turn: the
+// turns come a quarter radian apart up to the edge's direction.
+constexpr std::array<double, 15> kLeaderTurns_rad{0,    0.25, -0.25, 0.5,  -0.5,  0.75, -0.75, 1.0,
+                                                  -1.0, 1.3,  -1.3,  1.57, -1.57, 2.1,  -2.1};
 constexpr double kLeaderBar_mm = 1.6, kLeaderBarShare = 0.4;
 // Rounds over the labels that find no clear spot, each moving to where it runs into the least.
 constexpr int kCrowdedRounds = 2;
