@@ -9,6 +9,7 @@
 #include "../devices/src/render_internal.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/layout/guide.hpp"
+#include "foldkit/layout/piece_letters.hpp"
 #include "layout_fixtures.hpp"
 #include "test_images.hpp"
 #include "test_paths.hpp"
@@ -87,4 +88,53 @@ TEST(Guide, TheRenderedGuideShowsEveryPartsColour) {
   }
   for (int p = 0; p < parts; ++p)
     EXPECT_GT(seen[p], 50) << "colour of tint " << p;
+}
+
+// Fish at 300 mm: 20-odd parts, several of them small and side by side in the views; seen from the front
+// (head on) it is much narrower than long.
+const Guided& fish_guide() {
+  static const Guided g = [] {
+    const auto& ex = test::unfolded_example("fish_350.obj");
+    LayoutOptions o;
+    o.size_mm = 300;
+    Guided out;
+    out.split = test::split_to_fit(ex.mesh, ex.unfolding, o);
+    out.layout = layout_sheets(out.split.unfolding, o);
+    out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
+    return out;
+  }();
+  return g;
+}
+
+TEST(Guide, NoTwoLettersOfAViewOverlap) {
+  const Sheet& guide = fish_guide().guide;
+  // A letter's box as drawn: from its baseline up by its height, as wide as the print font sets it.
+  std::vector<Box2> boxes;
+  std::vector<std::string> names;
+  for (const Text& t : guide.texts)
+    if (t.role == PathRole::Piece) {
+      Box2 b;
+      b.add(t.at_mm);
+      b.add(t.at_mm + Vec2{letter_width_mm(t.text, t.height_mm, PieceLetterOptions{}), -t.height_mm});
+      boxes.push_back(b);
+      names.push_back(t.text);
+    }
+  ASSERT_GT(boxes.size(), 20u);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      EXPECT_FALSE(boxes[i].overlaps(boxes[j])) << names[i] << " and " << names[j];
+}
+
+TEST(Guide, AModelSeenEndOnStillFillsItsView) {
+  const Sheet& guide = fish_guide().guide;
+  // The front view is the one in the top left quarter of the page.
+  const Vec2 middle = 0.5 * (guide.printable_mm.min + guide.printable_mm.max);
+  Box2 front;
+  for (const Path& p : guide.paths)
+    if (p.role == PathRole::Piece && p.filled && p.points_mm[0].x < middle.x && p.points_mm[0].y < middle.y)
+      for (Vec2 q : p.points_mm)
+        front.add(q);
+  ASSERT_FALSE(front.empty());
+  // Its cell is a little under half the printable width; the sphere about the fish left it 0.23 of it.
+  EXPECT_GT(front.width(), 0.4 * guide.printable_mm.width());
 }

@@ -1,5 +1,6 @@
 #include "foldkit/layout/guide.hpp"
 
+#include "foldkit/layout/piece_letters.hpp"
 #include "foldkit/layout/polygon.hpp"
 
 #include <algorithm>
@@ -17,6 +18,9 @@ constexpr double kText_mm = 2.6;
 constexpr double kLine_mm = 4.2;
 constexpr int kRaster = 160;            // pixels a side of the visibility raster per view
 constexpr int kLeastVisiblePixels = 6;  // a part showing less than this gets no letter in the view
+constexpr double kLetterGap_mm = 0.6;   // between two letters of a view
+constexpr double kViewFill = 0.95;      // of its area a view fills, so letters at its rim stay inside
+constexpr double kLeastSeenShare = 0.1;
 
 struct View {
   const char* name;
@@ -112,39 +116,89 @@ void paint_faces(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
   }
 }
 
-// Each visible part's letter at its visible pixel nearest the middle of what shows of it.
+// A letter's box on the view, centred on `centre_mm` (y down), grown by the gap kept between letters.
+Box2 letter_box(Vec2 centre_mm, double width_mm, double height_mm) {
+  Box2 b;
+  b.add(centre_mm - Vec2{0.5 * width_mm, 0.5 * height_mm});
+  b.add(centre_mm + Vec2{0.5 * width_mm, 0.5 * height_mm});
+  return grown(b, 0.5 * kLetterGap_mm);
+}
+
+double overlap_area(const Box2& a, const Box2& b) {
+  const double w = std::min(a.max.x, b.max.x) - std::max(a.min.x, b.min.x);
+  const double h = std::min(a.max.y, b.max.y) - std::max(a.min.y, b.min.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+// Per part, its visible pixels, nearest the middle of what shows of it first.
+std::vector<std::vector<int>> pixels_by_part(const PartRaster& raster, int parts) {
+  std::vector<std::vector<int>> pixels(parts);
+  for (int i = 0; i < kRaster * kRaster; ++i)
+    if (raster.owner[i] >= 0) pixels[raster.owner[i]].push_back(i);
+  for (std::vector<int>& own : pixels) {
+    if (own.empty()) continue;
+    Vec2 mean{0, 0};
+    for (int i : own)
+      mean = mean + Vec2{static_cast<double>(i % kRaster), static_cast<double>(i / kRaster)};
+    mean = mean * (1.0 / static_cast<double>(own.size()));
+    const auto distance = [&](int i) {
+      return norm(Vec2{static_cast<double>(i % kRaster), static_cast<double>(i / kRaster)} - mean);
+    };
+    std::stable_sort(own.begin(), own.end(), [&](int a, int b) { return distance(a) < distance(b); });
+  }
+  return pixels;
+}
+
+// Each visible part's letter on what shows of it, as near its middle as the letters placed before
+// allow: parts that show least come first (they have the fewest spots), and a letter takes the nearest
+// spot clear of the others, else the one it overlaps least. Letters of small neighbouring parts placed
+// each at its own middle ran into each other ("PG" for P beside G).
 void letter_visible_parts(const PartRaster& raster, const std::vector<std::string>& letter_of_tint,
                           const GuideOptions& o, Sheet& sheet) {
-  const std::vector<int>& owner = raster.owner;
   const int parts = static_cast<int>(letter_of_tint.size());
-  std::vector<double> sx(parts, 0), sy(parts, 0);
-  std::vector<int> count(parts, 0);
-  for (int i = 0; i < kRaster * kRaster; ++i)
-    if (owner[i] >= 0) {
-      sx[owner[i]] += i % kRaster;
-      sy[owner[i]] += i / kRaster;
-      count[owner[i]] += 1;
-    }
-  for (int part = 0; part < parts; ++part) {
-    if (count[part] < kLeastVisiblePixels) continue;
-    const Vec2 mean{sx[part] / count[part], sy[part] / count[part]};
-    double best = 1e300;
-    Vec2 at = mean;
-    for (int i = 0; i < kRaster * kRaster; ++i) {
-      if (owner[i] != part) continue;
-      const Vec2 q{static_cast<double>(i % kRaster), static_cast<double>(i / kRaster)};
-      const double d = norm(q - mean);
-      if (d < best) {
-        best = d;
-        at = q;
-      }
-    }
-    const Vec2 centre_mm = raster.centre_mm(static_cast<int>(at.x), static_cast<int>(at.y));
+  const std::vector<std::vector<int>> pixels = pixels_by_part(raster, parts);
+  std::vector<int> order;
+  for (int part = 0; part < parts; ++part)
+    if (static_cast<int>(pixels[part].size()) >= kLeastVisiblePixels) order.push_back(part);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return pixels[a].size() < pixels[b].size(); });
+  std::vector<Box2> placed;
+  for (int part : order) {
     const std::string& letter = letter_of_tint[part];
-    const double w = 0.75 * o.letter_mm * static_cast<double>(letter.size());
+    const double w = letter_width_mm(letter, o.letter_mm, PieceLetterOptions{});
+    Vec2 best_centre;
+    double least = 1e300;
+    for (int i : pixels[part]) {
+      const Vec2 centre = raster.centre_mm(i % kRaster, i / kRaster);
+      const Box2 box = letter_box(centre, w, o.letter_mm);
+      double overlap = 0;
+      for (const Box2& other : placed)
+        overlap += overlap_area(box, other);
+      if (overlap < least) {
+        least = overlap;
+        best_centre = centre;
+      }
+      if (overlap == 0) break;
+    }
+    placed.push_back(letter_box(best_centre, w, o.letter_mm));
     sheet.texts.push_back(
-        Text{letter, centre_mm + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1});
+        Text{letter, best_centre + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1});
   }
+}
+
+// The view as large as its area allows: scaled so that the mesh seen from this side fills it, where the
+// sphere that holds the mesh left a long model seen end-on a small disc in the middle of its cell. The
+// extent counts as at least a tenth of the sphere's so that a flat or thin model seen edge-on stays in
+// proportion.
+Projection fitted_projection(const unfold::Mesh& mesh, const Camera& cam, Vec3 centre, double radius,
+                             const Box2& area) {
+  Box2 seen;
+  for (const Vec3& v : mesh.vertices)
+    seen.add(Vec2{dot(v - centre, cam.right), -dot(v - centre, cam.up)});
+  const double least = kLeastSeenShare * 2 * radius;
+  const double scale = kViewFill * std::min(area.width() / std::max(seen.width(), least),
+                                            area.height() / std::max(seen.height(), least));
+  return {cam, centre, 0.5 * (area.min + area.max) - 0.5 * (seen.min + seen.max) * scale, scale};
 }
 
 // One view drawn into `cell` (sheet frame, y down): its name, the shaded faces, the parts' letters.
@@ -154,8 +208,7 @@ void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
   sheet.texts.push_back(
       Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
   const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
-  const Projection projection{camera(view.eye), centre, 0.5 * (area.min + area.max),
-                              0.5 * std::min(area.width(), area.height()) / radius};
+  const Projection projection = fitted_projection(mesh, camera(view.eye), centre, radius, area);
   PartRaster raster;
   raster.area = area;
   raster.px = std::max(area.width(), area.height()) / kRaster;
