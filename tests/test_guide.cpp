@@ -25,17 +25,33 @@ struct Guided {
   Sheet guide;
 };
 
+// The parts `split_to_fit` cuts from examples/<name> at `options`, laid out, and their guide.
+Guided guided(const std::string& name, const LayoutOptions& options) {
+  const auto& ex = test::unfolded_example(name);
+  Guided out;
+  out.split = test::split_to_fit(ex.mesh, ex.unfolding, options);
+  out.layout = layout_sheets(out.split.unfolding, options);
+  out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
+  return out;
+}
+
 const Guided& spot_guide() {
   static const Guided g = [] {
-    const auto& ex = test::unfolded_example("spot_350.obj");
     LayoutOptions o;
     o.size_mm = 150;
     o.hints = true;
-    Guided out;
-    out.split = test::split_to_fit(ex.mesh, ex.unfolding, o);
-    out.layout = layout_sheets(out.split.unfolding, o);
-    out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
-    return out;
+    return guided("spot_350.obj", o);
+  }();
+  return g;
+}
+
+// Fish at 300 mm: 20-odd parts, several of them small and side by side in the views; seen from the front
+// (head on) it is much narrower than long.
+const Guided& fish_guide() {
+  static const Guided g = [] {
+    LayoutOptions o;
+    o.size_mm = 300;
+    return guided("fish_350.obj", o);
   }();
   return g;
 }
@@ -88,22 +104,6 @@ TEST(Guide, TheRenderedGuideShowsEveryPartsColour) {
   }
   for (int p = 0; p < parts; ++p)
     EXPECT_GT(seen[p], 50) << "colour of tint " << p;
-}
-
-// Fish at 300 mm: 20-odd parts, several of them small and side by side in the views; seen from the front
-// (head on) it is much narrower than long.
-const Guided& fish_guide() {
-  static const Guided g = [] {
-    const auto& ex = test::unfolded_example("fish_350.obj");
-    LayoutOptions o;
-    o.size_mm = 300;
-    Guided out;
-    out.split = test::split_to_fit(ex.mesh, ex.unfolding, o);
-    out.layout = layout_sheets(out.split.unfolding, o);
-    out.guide = guide_sheet(ex.mesh, out.split.unfolding, out.layout, GuideOptions{});
-    return out;
-  }();
-  return g;
 }
 
 TEST(Guide, NoTwoLettersOfAViewOverlap) {
