@@ -16,11 +16,11 @@ namespace {
 constexpr double kTitle_mm = 4;
 constexpr double kText_mm = 2.6;
 constexpr double kLine_mm = 4.2;
-constexpr int kRaster = 160;            // pixels a side of the visibility raster per view
-constexpr int kLeastVisiblePixels = 6;  // a part showing less than this gets no letter in the view
-constexpr double kLetterGap_mm = 0.6;   // between two letters of a view
-constexpr double kViewFill = 0.95;      // of its area a view fills, so letters at its rim stay inside
-constexpr double kLeastSeenShare = 0.1;
+constexpr int kRaster = 160;             // pixels a side of the visibility raster per view
+constexpr int kLeastVisiblePixels = 6;   // a part showing less than this gets no letter in the view
+constexpr double kLetterGap_mm = 0.6;    // between two letters of a view
+constexpr double kViewFill = 0.95;       // of its area a view fills, so letters at its rim stay inside
+constexpr double kLeastSeenShare = 0.1;  // of the sphere's width, the least extent a view is scaled to
 
 struct View {
   const char* name;
