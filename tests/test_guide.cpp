@@ -125,6 +125,18 @@ TEST(Guide, NoTwoLettersOfAViewOverlap) {
       EXPECT_FALSE(boxes[i].overlaps(boxes[j])) << names[i] << " and " << names[j];
 }
 
+// Back faces and shaded sides are dark: a letter there reads only on its white halo (render tests).
+TEST(Guide, EveryLetterIsDrawnOnAHaloOverTheFaces) {
+  const Sheet& guide = fish_guide().guide;
+  int letters = 0;
+  for (const Text& t : guide.texts)
+    if (t.role == PathRole::Piece) {
+      ++letters;
+      EXPECT_TRUE(t.halo_over_paths) << t.text;
+    }
+  EXPECT_GT(letters, 20);
+}
+
 TEST(Guide, AModelSeenEndOnStillFillsItsView) {
   const Sheet& guide = fish_guide().guide;
   // The front view is the one in the top left quarter of the page.

@@ -260,6 +260,59 @@ TEST(RenderPng, TheHaloOfALabelBesideItsEdgeLeavesTheLineVisible) {
   EXPECT_GT(white_in_band, 100) << "the halo is there, around the digits";
 }
 
+// The guide's letters stand on its shaded views: a letter asking for a halo over the paths gets white
+// around its glyphs on a dark filled triangle, where without it there is none.
+namespace {
+
+Sheet letter_on_a_dark_face(bool halo) {
+  Sheet s;
+  s.size_mm = {60, 60};
+  Path face{PathRole::Piece, {{5, 5}, {55, 5}, {55, 55}, {5, 55}}, true, -1, true, 3};
+  face.shade = 0.3;
+  s.paths.push_back(face);
+  Text letter{"M", {24, 36}, 10.0, 0.0, PathRole::Piece, -1};
+  letter.halo_over_paths = halo;
+  s.texts.push_back(letter);
+  return s;
+}
+
+int white_pixels_around_the_letter(const Sheet& sheet, const std::string& name) {
+  const fs::path png = foldkit::test::temp_dir("render") / name;
+  RenderOptions o;
+  o.png_dpi = 150;
+  render_sheets({sheet}, png, o);
+  const foldkit::test::RgbImage image = foldkit::test::read_image(png);
+  const double px_per_mm = 150 / 25.4;
+  int white = 0;
+  for (int y = static_cast<int>(22 * px_per_mm); y < static_cast<int>(40 * px_per_mm); ++y)
+    for (int x = static_cast<int>(20 * px_per_mm); x < static_cast<int>(40 * px_per_mm); ++x) {
+      const unsigned char* p = image.px(x, y);
+      white += p[0] + p[1] + p[2] > 700;
+    }
+  return white;
+}
+
+}  // namespace
+
+TEST(RenderPng, ALetterAskingForAHaloReadsOnADarkFilledFace) {
+  EXPECT_EQ(white_pixels_around_the_letter(letter_on_a_dark_face(false), "dark_plain.png"), 0);
+  EXPECT_GT(white_pixels_around_the_letter(letter_on_a_dark_face(true), "dark_halo.png"), 200);
+}
+
+TEST(RenderSvg, ALetterAskingForAHaloHasItsWhiteCopyAfterTheFacesItStandsOn) {
+  const fs::path svg = foldkit::test::temp_dir("render") / "dark_halo.svg";
+  render_sheets({letter_on_a_dark_face(true)}, svg);
+  const std::string text = slurp(svg);
+  const auto face = text.find("<path d=\"M5 5");
+  const auto halo = text.find("stroke=\"#ffffff\"");
+  const auto letter = text.find(">M</text>", halo == std::string::npos ? 0 : halo + 1);
+  ASSERT_NE(face, std::string::npos);
+  ASSERT_NE(halo, std::string::npos);
+  ASSERT_NE(letter, std::string::npos);
+  EXPECT_LT(face, halo);
+  EXPECT_LT(halo, letter);
+}
+
 TEST(RenderSvg, ALabelTakesItsReservedLengthWhateverFontTheViewerHas) {
   const fs::path svg = foldkit::test::temp_dir("render") / "narrow.svg";
   render_sheets({label_sheet()}, svg);

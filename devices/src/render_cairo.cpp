@@ -123,19 +123,34 @@ void for_each_text(cairo_t* cr, const Sheet& sheet, const RenderOptions& options
   }
 }
 
-// On coloured sheets a white halo keeps texts readable on dark textures. It is painted before the lines,
-// so a label close to its edge never whitens the cut or fold line it stands beside.
-void draw_text_halos(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
-  if (sheet.fills.empty()) return;
+// A white halo under each text `which` accepts.
+template <class Which>
+void paint_halos(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps,
+                 Which which) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for_each_text(cr, sheet, options, caps, [&](const Text& text) {
+    if (!which(text)) return;
     cairo_new_path(cr);
     at_text(cr, text, [&] { cairo_text_path(cr, text.text.c_str()); });
     cairo_set_line_width(cr, kHaloPerCap * text.height_mm);
     cairo_stroke_preserve(cr);
     cairo_fill(cr);
   });
+}
+
+// On coloured sheets a white halo keeps texts readable on dark textures. It is painted before the lines,
+// so a label close to its edge never whitens the cut or fold line it stands beside.
+void draw_text_halos(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
+  if (sheet.fills.empty()) return;
+  paint_halos(cr, sheet, options, caps, [](const Text&) { return true; });
+}
+
+// The halos painted over the paths of their role (Text::halo_over_paths), as the SVG writer does.
+void draw_halos_over(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps,
+                     PathRole role) {
+  paint_halos(cr, sheet, options, caps,
+              [role](const Text& text) { return text.halo_over_paths && text.role == role; });
 }
 
 void draw_texts(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, const CapRatios& caps) {
@@ -216,8 +231,10 @@ void draw_sheet(cairo_t* cr, const Sheet& sheet, const RenderOptions& options, c
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   draw_text_halos(cr, sheet, options, caps);
-  for (PathRole role : kPaintOrder)
+  for (PathRole role : kPaintOrder) {
     draw_paths(cr, sheet, options, role);
+    draw_halos_over(cr, sheet, options, caps, role);
+  }
   draw_texts(cr, sheet, options, caps);
   draw_legend(cr, sheet, options, caps.text);
 }

@@ -2,6 +2,7 @@
 // cutting software (Silhouette Studio, Inkscape, Cricut Design Space) picks layers by group id. Every
 // role gets its own <g id="…"> (also marked as an Inkscape layer), present even when empty so that
 // tools can rely on its ids, and texts stay <text> elements so they remain editable.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <ostream>
@@ -168,6 +169,17 @@ void write_text_halos(std::ostream& out, const Sheet& sheet, const RenderOptions
   out << "  </g>\n";
 }
 
+// The halos painted over the paths of `role` (Text::halo_over_paths), in its group after them.
+void write_halos_over(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio,
+                      PathRole role, const std::string& family) {
+  const auto over = [role](const Text& t) { return t.role == role && t.halo_over_paths && !t.text.empty(); };
+  if (std::none_of(sheet.texts.begin(), sheet.texts.end(), over)) return;
+  out << "    <g font-family=\"" << escape(family) << "\">\n";
+  for (const Text& text : sheet.texts)
+    if (over(text)) write_text(out, text, options, cap_ratio, true);
+  out << "    </g>\n";
+}
+
 // The legend of line styles in the box layout kept for it, inside the sheet group.
 void write_legend(std::ostream& out, const Sheet& sheet, const RenderOptions& options, double cap_ratio) {
   if (sheet.legend_mm.empty()) return;
@@ -214,6 +226,8 @@ void write_svg(std::ostream& out, const Sheet& sheet, const RenderOptions& optio
       if (drawn && path.role == role && !path.points_mm.empty()) write_path(out, path, style);
     }
     const bool label_font = in_label_font(role);
+    write_halos_over(out, sheet, options, label_font ? caps.label : caps.text, role,
+                     label_font ? options.label_font_family : options.font_family);
     bool any_text = false;
     for (const Text& text : sheet.texts) {
       if (text.role != role || text.text.empty()) continue;

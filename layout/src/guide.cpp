@@ -181,8 +181,10 @@ void letter_visible_parts(const PartRaster& raster, const std::vector<std::strin
       if (overlap == 0) break;
     }
     placed.push_back(letter_box(best_centre, w, o.letter_mm));
-    sheet.texts.push_back(
-        Text{letter, best_centre + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1});
+    Text text{letter, best_centre + Vec2{-0.5 * w, 0.5 * o.letter_mm}, o.letter_mm, 0, PathRole::Piece, -1};
+    // Dark faces (the back faces, the shaded sides) would swallow a dark letter.
+    text.halo_over_paths = true;
+    sheet.texts.push_back(std::move(text));
   }
 }
 

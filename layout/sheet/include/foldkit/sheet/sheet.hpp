@@ -66,6 +66,10 @@ struct Text {
   /// The length the layout reserved along the baseline, 0 for none. A renderer whose font sets the
   /// text wider squeezes it to this length, so it never runs into the lines the layout kept it from.
   double width_mm = 0;
+  /// Set on a text that stands on dark filled paths of its own role (the guide's letters on its shaded
+  /// views): a white halo is painted over those paths under it. Unlike the halos of coloured sheets,
+  /// which go under every line, this one may cover lines: none beneath it needs to show.
+  bool halo_over_paths = false;
 };
 
 /// A texture image that fills refer to: a file, or the encoded bytes a model file embedded.
