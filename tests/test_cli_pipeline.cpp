@@ -1,6 +1,6 @@
 // The pipeline's choice above unfold and layout: where the parts chosen from the default unfolding
-// leave labels unclear or seams without a tab, the mesh is unfolded again with seams where labels have
-// room, and the better of the two prints.
+// leave labels unclear or seams without a tab, the mesh is unfolded again other ways (seams where labels
+// have room, then both preferences from the next seed) while the flaws stay, and the best prints.
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -42,14 +42,14 @@ layout::LayoutResult first_choice(const cli::UnfoldRun& run, const layout::Layou
 }  // namespace
 
 TEST(Pipeline, UnclearLabelsGetASecondUnfoldingWithSeamsWhereLabelsHaveRoomKeptWhenItHasFewerFlaws) {
-  // fish_350 at 125 mm: its first unfolding leaves labels without a clear spot even on leaders (7); the
-  // second one's seams run where they have room (4).
+  // fish_350 at 110 mm: its first unfolding leaves labels without a clear spot even on leaders (22
+  // flaws); the second one's seams run where they have room (11).
   layout::LayoutOptions o = at_150_mm();
-  o.size_mm = 125;
+  o.size_mm = 110;
   cli::UnfoldRun run = unfolded_for_print("fish_350.obj", o);
   const layout::LayoutResult first = first_choice(run, o);
   ASSERT_GT(cli::flaws(first), cli::kFewFlawsShare * first.label_audit.labels)
-      << "fish_350 at 125 mm leaves some labels unclear";
+      << "fish_350 at 110 mm leaves some labels unclear";
   const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(run.options.cuts.prefer, unfold::SeamPreference::Balanced) << "the second unfolding printed";
@@ -70,4 +70,28 @@ TEST(Pipeline, ALayoutWithFewFlawsKeepsTheDefaultUnfolding) {
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(chosen->sheets.size(), first.sheets.size());
   EXPECT_EQ(cli::flaws(*chosen), cli::flaws(first));
+}
+
+TEST(Pipeline, WhereBothPreferencesLeaveLabelsUnclearTheNextSeedsUnfoldingPrintsWhenClearer) {
+  // bob_350 at 90 mm: the default unfolding leaves 11 flaws, the seams with room about as many; the
+  // walk from the next seed finds an unfolding with 5.
+  layout::LayoutOptions o = at_150_mm();
+  o.size_mm = 90;
+  cli::UnfoldRun run = unfolded_for_print("bob_350.obj", o);
+  const layout::LayoutResult first = first_choice(run, o);
+  cli::UnfoldRun with_room;
+  with_room.loaded = run.loaded;
+  with_room.options = run.options;
+  with_room.options.cuts.prefer = unfold::SeamPreference::Balanced;
+  with_room.options.search.prefer_weighted_ties = true;
+  with_room.result = unfold::unfold_mesh(with_room.loaded.mesh, with_room.options);
+  const layout::LayoutResult second = first_choice(with_room, o);
+  const std::optional<layout::LayoutResult> chosen = cli::choose_and_note_parts(run, o);
+  ASSERT_TRUE(chosen.has_value());
+  EXPECT_EQ(run.options.seed, 2u) << "an unfolding from the next seed printed";
+  EXPECT_LE(chosen->sheets.size(), std::min(first.sheets.size(), second.sheets.size()));
+  EXPECT_LT(cli::flaws(*chosen), cli::flaws(first));
+  EXPECT_LT(cli::flaws(*chosen), cli::flaws(second));
+  EXPECT_EQ(run.result.unfolding.piece_count, chosen->placements.size())
+      << "the parts laid out are the run's";
 }

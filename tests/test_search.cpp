@@ -247,3 +247,39 @@ TEST(Search, TiesBetweenMovesGoToTheCutsTheWeightsPrefer) {
   EXPECT_EQ(check_unfolding(mesh, flatten(mesh, ties.edges)), std::vector<std::string>{});
   EXPECT_GT(mean_cut_weight(ties.edges), mean_cut_weight(plain.edges));
 }
+
+// Printed at 150 mm, a cut edge too tight for its label leaves the label crossing a line. Drawing the
+// heaviest of several path edges as each candidate cut (the tight ones are the lightest) leads the walk
+// to cut fewer of them, still to one valid piece.
+TEST(Search, DrawingTheHeaviestOfSeveralPathEdgesCutsFewerEdgesTooTightForALabel) {
+  for (const char* name : {"fish_350.obj", "penguin_500.obj"}) {
+    const Mesh mesh = load(name);
+    const double extent = flatten(mesh, mst_folds(make_context(mesh))).model_extent;
+    // A two-digit label at 2 mm (cli/print_cuts.cpp): 2.85 mm tall, 3.3 mm wide, at 150 mm.
+    CutOptions cuts;
+    cuts.label_aspect = 3.3 / 2.85;
+    cuts.label_room = 2.85 * extent / 150;
+    const UnfoldContext ctx = make_context(mesh, cuts);
+    const std::vector<LabelFit> fit = tight_edges(mesh, cuts);
+    const auto tight_cuts = [&](const EdgeStates& s) {
+      int n = 0;
+      for (EdgeId e : all_ids<EdgeId>(mesh.num_edges()))
+        n += s[e] == EdgeState::Cut && !mesh.edge(e).boundary() && fit[e.index()] == LabelFit::Tight;
+      return n;
+    };
+    int uniform = 0, drawn = 0;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      SearchOptions opt;
+      opt.seed = seed;
+      const SearchResult plain = search_unfold(ctx, mst_folds(ctx), opt);
+      opt.cut_draws = 6;
+      const SearchResult heavier = search_unfold(ctx, mst_folds(ctx), opt);
+      ASSERT_TRUE(plain.solved && heavier.solved) << name << " seed " << seed;
+      EXPECT_EQ(check_unfolding(mesh, flatten(mesh, heavier.edges)), std::vector<std::string>{});
+      uniform += tight_cuts(plain.edges);
+      drawn += tight_cuts(heavier.edges);
+    }
+    // fish_350 63 -> 39, penguin_500 42 -> 17 when written.
+    EXPECT_LT(drawn, uniform) << name;
+  }
+}

@@ -125,7 +125,7 @@ class Walker {
     if (kick_ > 0) --kick_;
     Move best;
     for (int k = 0; k < opt_.candidates_per_move; ++k)
-      try_cut(path[uniform(rng_, path.size())], best_delta, best);
+      try_cut(drawn_cut(path), best_delta, best);
     if (best.cut.valid()) apply(best);
     if (tree_.overlap_count() < run_best_) {
       record_best();
@@ -135,6 +135,17 @@ class Walker {
     } else if (stall_ >= opt_.restart_after) {
       fresh_tree();
     }
+  }
+
+  // A candidate cut from `path`: the heaviest of cut_draws edges drawn at random (cut_weights: the
+  // preferred cut), so that where the weights grade label room the walk cuts roomy edges more often.
+  EdgeId drawn_cut(const std::vector<EdgeId>& path) {
+    EdgeId e = path[uniform(rng_, path.size())];
+    for (int d = 1; d < opt_.cut_draws; ++d) {
+      const EdgeId o = path[uniform(rng_, path.size())];
+      if (ctx_.weight[o.index()] > ctx_.weight[e.index()]) e = o;
+    }
+    return e;
   }
 
   // The fold path between a random overlapping face and a random partner of it.

@@ -57,6 +57,7 @@ SearchRun run_search(const Mesh& mesh, const CutOptions& cuts, const EdgeConstra
   so.threads = options.threads;
   so.time_limit_s = time_limit_s;
   so.max_steps = max_steps;
+  if (cuts.label_room > 0) so.cut_draws = options.label_room_cut_draws;
   so.constraints = constraints;
   run.result = search_unfold(run.ctx, spanning_forest(mesh, run.ctx.weight, constraints), so, progress);
   return run;

@@ -40,6 +40,9 @@ struct SearchOptions {
   /// Of two candidate moves that change the overlap count alike, take the one whose cut is heavier and
   /// whose re-attached edge lighter (UnfoldContext::weight): the walk drifts towards the preferred cuts.
   bool prefer_weighted_ties = false;
+  /// Path edges drawn per candidate cut, the heaviest (UnfoldContext::weight) tried: 1 draws uniformly;
+  /// more lean the walk towards the preferred cuts while it removes overlaps.
+  int cut_draws = 1;
   /// Independent walks (walk k uses seed + k), advanced in rounds of `round_steps` steps each; after a
   /// round the lowest-numbered walk that reached one piece wins. Their number, not `threads`, decides
   /// the result, so the same seed gives the same cuts whatever the thread count.

@@ -57,6 +57,9 @@ struct UnfoldOptions {
   /// label_room_share of time_limit_s is only an outer safety.
   double label_room_share = 0.25;
   long label_room_most_steps = 250'000;
+  /// With cuts.label_room set, the search's SearchOptions::cut_draws: its walk cuts roomy edges more
+  /// often while it removes overlaps, and so fewer tight ones.
+  int label_room_cut_draws = 6;
   SearchOptions search;  ///< `--method search` (portfolio, tabu tenure, ...)
   GaOptions ga;          ///< `--method ga` (population, fitness weights, ...)
 };
