@@ -54,8 +54,8 @@ bool may_try_other_unfoldings(const UnfoldRun& run, const layout::LayoutOptions&
 // everywhere (882 against 950 labels unclear, 208 against 171 seams without a tab), and one seed's
 // walk is luck: plane_500's unclear labels range over 168-212 with the seed alone.
 // Each is tried only while the flaws held exceed its share of the labels: the next seed's two at issue
-// 12's bar, where a choice of parts doubling the time buys what the bar asks (below it, bunny_500 at
-// 250 mm took 8.9 -> 22.5 s for no label).
+// 12's bar. Tried above 0.5% too, they took `bench --layout` 507 -> 613 s wall (bunny_500 at 250 mm
+// 8.9 -> 22.5 s) for 6 unclear labels fewer over the label sweep (417 -> 411).
 struct OtherUnfolding {
   unfold::SeamPreference prefer;
   bool weighted_ties;
@@ -91,8 +91,8 @@ ChosenParts choose_and_lay_out(const unfold::Mesh& mesh, const unfold::Unfolding
 
 // Where the chosen layout has more flaws than kFewFlawsShare of its labels, the mesh is unfolded again
 // the other ways (kOtherUnfoldings), one after another while the flaws stay above each one's share, and
-// its parts chosen
-// again; a choice replaces the one held when it takes fewer sheets, or as many with fewer flaws.
+// its parts chosen again; a choice replaces the one held when it takes fewer sheets, or as many with
+// fewer flaws.
 // Either way a full choice of parts: only their layouts tell. Past the time limit the one held stands.
 // Judged on labels alone the second unfolding traded 54 fewer unclear labels for 5 more seams without a
 // tab (882 -> 828, 208 -> 213 over the label sweep's meshes); judged by flaws, fewer of each
