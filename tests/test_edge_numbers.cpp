@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "foldkit/layout/edge_numbers.hpp"
 #include "foldkit/layout/label_text.hpp"
@@ -23,6 +24,16 @@ std::vector<std::vector<FoldLine>> folds_of(const unfold::Unfolding& u,
   for (const ScaledPiece& p : pieces)
     folds.push_back(fold_lines(u, p));
   return folds;
+}
+
+// The label "12" of the one seam of `seams`, placed among `folds`, where it is the one label placed and
+// found a spot clear of lines (beside its edge or on a leader); else none.
+std::optional<Label> lone_clear_label(const std::vector<ScaledPiece>& pieces, const std::vector<Seam>& seams,
+                                      const std::vector<std::vector<FoldLine>>& folds,
+                                      const LabelOptions& o) {
+  std::vector<Label> labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
+  if (labels.size() != 1 || labels.front().crowded || labels.front().over_fold) return std::nullopt;
+  return std::move(labels.front());
 }
 
 }  // namespace
@@ -172,6 +183,30 @@ TEST(EdgeNumbers, ALabelOnALeaderReadsAcrossItsEdgeWhereOnlyThatWayFitsClear) {
   EXPECT_LE(norm(l.leader_mm[0][1] - l.leader_mm[0][0]), o.leader_reach_mm);
 }
 
+TEST(EdgeNumbers, ALabelOnALeaderReadsAlongASlantedGapWhereNeitherWayOfItsEdgeFits) {
+  // A needle leaning 0.75 rad (43 degrees) off upright over a 5 mm base, a fold across it 2 mm up:
+  // beyond the fold it is under 5 mm wide, too narrow for "12" along the base or across it, and 3.6 mm
+  // square to its lean.
+  const auto [pieces, seams] = one_triangle_glued_at_its_base({0, 0}, {5, 0}, {39.76, 40});
+  const std::array<Vec2, 2> fold{Vec2{2.1, 2}, Vec2{6.75, 2}};
+  const std::vector<std::vector<FoldLine>> folds{{FoldLine{PathRole::Valley, fold[0], fold[1], 7}}};
+  const LabelOptions o;
+  const std::optional<Label> placed = lone_clear_label(pieces, seams, folds, o);
+  ASSERT_TRUE(placed.has_value()) << "one label, clear of lines";
+  const Label& l = *placed;
+  ASSERT_EQ(l.leader_mm.size(), 2u);
+  const double along_base = std::fabs(dot(l.dir, Vec2{1, 0}));
+  EXPECT_GT(along_base, 0.3) << "not across the base";
+  EXPECT_LT(along_base, 0.95) << "not along the base";
+  LabelOptions quick = o;
+  quick.leader_search = LeaderSearch::Quick;
+  EXPECT_FALSE(lone_clear_label(pieces, seams, folds, quick).has_value())
+      << "the quick search reads along or across the base only";
+  EXPECT_FALSE(convex_overlap(l.box_mm, fold, -o.tight_clearance_mm));
+  for (Vec2 corner : l.box_mm)
+    EXPECT_TRUE(inside_convex(pieces[0].triangles_mm[0], corner, 0)) << corner.x << " " << corner.y;
+}
+
 TEST(EdgeNumbers, ALabelWithNoSpotAtTheFullClearanceKeepsTheTightOneBeforeCrossingAFold) {
   // The needle above with a fold across it 0.18 mm above where "12" across the base ends (3.1 mm): too
   // close for the 0.25 mm clearance, clear of the tight 0.12 mm one. The label stays off the fold, the
@@ -260,8 +295,9 @@ struct TinyFaceInAFan {
   std::vector<Seam> seams;
   std::vector<std::vector<FoldLine>> folds;
 };
-TinyFaceInAFan tiny_face_in_a_fan() {
-  const Vec2 a{0, 0}, b{2, 0}, c{1, 1.2}, d{5, 12}, e{-3, 12};
+// The large face's top edge d-e runs at y = 12 from `d_x` to `e_x`.
+TinyFaceInAFan tiny_face_in_a_fan(double d_x = 5, double e_x = -3) {
+  const Vec2 a{0, 0}, b{2, 0}, c{1, 1.2}, d{d_x, 12}, e{e_x, 12};
   ScaledPiece piece;
   piece.index = 0;
   piece.faces = {0, 1, 2, 3};
@@ -282,11 +318,9 @@ TinyFaceInAFan tiny_face_in_a_fan() {
 TEST(EdgeNumbers, ALabelWithNoRoomBesideItsEdgeStandsOffClearWithALeaderToTheEdgesMiddle) {
   const auto [pieces, seams, folds] = tiny_face_in_a_fan();
   const LabelOptions o;
-  const auto labels = place_labels(pieces, seams, std::vector<int>{12}, TabPlan{}, folds, {}, o);
-  ASSERT_EQ(labels.size(), 1u);
-  const Label& l = labels.front();
-  EXPECT_FALSE(l.crowded);
-  EXPECT_FALSE(l.over_fold);
+  const std::optional<Label> placed = lone_clear_label(pieces, seams, folds, o);
+  ASSERT_TRUE(placed.has_value()) << "one label, clear of lines";
+  const Label& l = *placed;
   EXPECT_DOUBLE_EQ(l.height_mm, o.min_mm);
   for (const FoldLine& f : folds[0])
     EXPECT_FALSE(convex_overlap(l.box_mm, std::array<Vec2, 2>{f.a, f.b}, -o.tight_clearance_mm));
@@ -340,6 +374,42 @@ TEST(EdgeNumbers, ALabelWithNoClearSpotAnywhereStandsOffAcrossFoldsRatherThanOve
   EXPECT_FALSE(convex_overlap(l.box_mm, right, 0));
   for (const OutlineEdge& edge : pieces[0].outline_mm[0])
     EXPECT_FALSE(convex_overlap(l.box_mm, std::array<Vec2, 2>{edge.a, edge.b}, 0));
+}
+
+TEST(EdgeNumbers, ALabelWhoseOnlyLeaderSpotANeighbourTookGetsItWhenTheNeighbourCanMove) {
+  // The fan above with a 20 mm top edge d-e, glued (seam 1), and part letters over the large face's
+  // lower part but for a way up from the tiny base 1.2 mm wide: a label on a leader from the base can
+  // reach only the middle of the strip below the top edge, where the top edge's label stands (it takes
+  // the middle first). That label has room all along its edge: it moves, both are clear. Left where it
+  // was, the base's label would cross a line or cover a text.
+  auto [pieces, seams, folds] = tiny_face_in_a_fan(11, -9);
+  Seam top_edge;
+  top_edge.edge = 2;
+  top_edge.sides = {SeamSide{0, 0, 2}, SeamSide{}};
+  seams.push_back(top_edge);
+  const Polygon left{{-12, 1.5}, {0.4, 1.5}, {0.4, 8.5}, {-12, 8.5}},
+      right{{1.6, 1.5}, {14, 1.5}, {14, 8.5}, {1.6, 8.5}};
+  const std::vector<std::vector<Polygon>> taken{{left, right}};
+  const LabelOptions o;
+  const auto labels =
+      place_labels(pieces, seams, std::vector<int>{12, 13}, TabPlan{}, folds, {}, o, {}, taken);
+  ASSERT_EQ(labels.size(), 2u);
+  const Label& base = labels[0];
+  EXPECT_FALSE(base.crowded);
+  EXPECT_FALSE(base.over_fold);
+  ASSERT_EQ(base.leader_mm.size(), 2u) << "the base's label stands off on a leader";
+  EXPECT_GT(base.at_mm.y, 8.5) << "in the strip below the top edge";
+  const Label& top = labels[1];
+  EXPECT_FALSE(top.crowded);
+  EXPECT_FALSE(top.over_fold);
+  EXPECT_GT(std::fabs((top.box_mm[0] + top.box_mm[2]).x * 0.5 - 1), 2) << "the top edge's label moved aside";
+  EXPECT_FALSE(convex_overlap(base.box_mm, top.box_mm, -o.tight_clearance_mm));
+  for (const Label& l : labels) {
+    for (const Polygon& area : taken[0])
+      EXPECT_FALSE(convex_overlap(l.box_mm, area, -o.tight_clearance_mm)) << l.text;
+    for (const FoldLine& f : folds[0])
+      EXPECT_FALSE(convex_overlap(l.box_mm, std::array<Vec2, 2>{f.a, f.b}, -o.tight_clearance_mm)) << l.text;
+  }
 }
 
 TEST(EdgeNumbers, ALeaderKeepsOffOtherLabelsAndTheirLeadersAndNeverLeavesThePiece) {
