@@ -647,9 +647,12 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   const bool large = mesh.num_faces() > kManyFaces;
   layout::LayoutOptions o = asked;
   if (large) o.pack.rotations = std::min(o.pack.rotations, kLargeMeshRotations);
-  // Their labels look for leader spots the quick way: where most find none (torus_2000 at 150 mm, 1,456
-  // of 2,010 unclear either way) the thorough search took the layout from 1.5 to 2.5 s.
-  if (large) o.label.leader_search = layout::LeaderSearch::Quick;
+  // Labels look for leader spots thoroughly on meshes up to kMostFacesForThoroughLabels, where it pays
+  // (350-500 faces at 150 mm: 417 -> 345 labels unclear). Above, most labels of a crowded layout find
+  // no spot either way and every one tried costs: torus_2000 at 150 mm laid out in 2.5 s instead of 1.5,
+  // screwdriver_1000 at 250 mm in 30 s instead of 17 with 83 labels unclear instead of 75.
+  constexpr int kMostFacesForThoroughLabels = 750;
+  if (mesh.num_faces() > kMostFacesForThoroughLabels) o.label.leader_search = layout::LeaderSearch::Quick;
   // Seams move inside the parts of smaller meshes only: on 2,000-face meshes the moves doubled some
   // layouts (threeholes_2000 at 150 mm: 1.2 -> 2.9 s) and left more labels crossing lines at 250 mm
   // (cheburashka_2000: 173 -> 324); up to 1,000 faces they leave fewer (9,729 -> 9,507 of 39,214).
