@@ -317,8 +317,9 @@ namespace {
 // smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged by packing
 // it (the estimate). Large meshes try the first three only, so their layout stays fast; a count, not a
 // clock, so the same input gives the same parts. Under a time limit, another trial must leave room for
-// the full layouts (with labels, dearer).
-void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long bound, bool large,
+// the full layouts (with labels, dearer). The trials end once an estimate takes `stop_at` sheets or
+// fewer (0: never).
+void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long stop_at, bool large,
                     bool patches, std::chrono::steady_clock::duration trial_time,
                     std::vector<Candidate>& candidates) {
   struct Try {
@@ -352,7 +353,7 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long b
                             [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
   };
   for (std::size_t t = 0; t < trials; ++t) {
-    if (best_estimate()->sheets <= bound) break;
+    if (best_estimate()->sheets <= stop_at) break;
     if (o.deadline && std::chrono::steady_clock::now() + 4 * trial_time > *o.deadline) break;
     if (tries[t].patches && !patches) continue;
     std::optional<Candidate> made = tries[t].patches
@@ -647,6 +648,9 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   const bool large = mesh.num_faces() > kManyFaces;
   layout::LayoutOptions o = asked;
   if (large) o.pack.rotations = std::min(o.pack.rotations, kLargeMeshRotations);
+  // Nor do they search for sheets to empty once packed: plane_2000 at 250 mm took 3.1 s with it, 2.4 s
+  // without, for the same 3 sheets.
+  if (large) o.pack.sheet_search_orders = 0;
   // Labels look for leader spots thoroughly on meshes up to kMostFacesForThoroughLabels, where it pays
   // (350-500 faces at 150 mm: 417 -> 345 labels unclear). Above, most labels of a crowded layout find
   // no spot either way and every one tried costs: torus_2000 at 150 mm laid out in 2.5 s instead of 1.5,
@@ -666,13 +670,17 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
   }
   const int too_large = first.parts.split_pieces;
   const auto first_start = std::chrono::steady_clock::now();
-  // Faces larger than half the room can leave the area bound out of reach: the trials stop at a bound
-  // that counts shapes too.
-  const long bound = least_sheets(u, o, chooser.estimate(first));
+  // Faces larger than half the room can leave the area bound out of reach: the bound counts shapes too.
+  // Reaching it ends the trials, except where the shapes set it: a model of such faces takes that many
+  // sheets whatever its parts, and the later trials (parts grown into tiles of the sheet) often tie with
+  // fewer parts (lowpoly/rhombicuboctahedron at 250 mm: 9 sheets in 16 parts, not 22).
+  const double used_mm2 = chooser.estimate(first);
+  const long bound = least_sheets(u, o, used_mm2);
+  const long stop_at = bound > area_sheet_bound(o, used_mm2) ? 0 : bound;
   const auto trial_time = std::chrono::steady_clock::now() - first_start;
   std::vector<Candidate> candidates;
   candidates.push_back(std::move(first));
-  try_partitions(chooser, o, bound, large, choose.patches, trial_time, candidates);
+  try_partitions(chooser, o, stop_at, large, choose.patches, trial_time, candidates);
   Candidate best = best_full_layout(chooser, candidates, large);
   keep_patches_only_if_legible(chooser, candidates, best);
   if (!large) {

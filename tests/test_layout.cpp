@@ -374,6 +374,32 @@ TEST(Layout, StatsAddUpToTheAreasOnTheSheets) {
   EXPECT_EQ(r.overall.labels, 2 * ex.unfolding.seam_count());
 }
 
+TEST(Layout, TheSpacedBoundHoldsOnEverySheetAndLiesBetweenTheAreaBoundAndTheSheets) {
+  // Outlines a gap apart, each grown by half of it, never overlap: on every sheet they fit within the
+  // printable area grown alike, so their sum bounds the sheets from below, above the bare area.
+  const auto& ex = test::unfolded_example("fish_350.obj");
+  LayoutOptions o = at_size(200);
+  o.paper_mm = {148, 210};
+  const LayoutResult r = layout_sheets(ex.unfolding, o);
+  const Box2 area = printable_area(o);
+  const double h = 0.5 * o.pack.spacing_mm;
+  const double room = (area.width() + 2 * h) * (area.height() + 2 * h) - (4 - std::numbers::pi) * h * h;
+  for (const SheetStats& s : r.sheet_stats) {
+    EXPECT_GT(s.spaced_area_mm2, s.piece_area_mm2 + s.tab_area_mm2);
+    EXPECT_LE(s.spaced_area_mm2, room);
+  }
+  const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
+  const long by_area = static_cast<long>(std::ceil(used / (area.width() * area.height())));
+  EXPECT_GE(spaced_sheet_bound(r, o), by_area);
+  EXPECT_LE(spaced_sheet_bound(r, o), static_cast<long>(r.sheets.size()));
+  LayoutResult exact;
+  exact.overall.spaced_area_mm2 = 2 * room;
+  EXPECT_EQ(spaced_sheet_bound(exact, o), 2) << "areas that fill whole sheets need no sheet more";
+  exact.overall.spaced_area_mm2 = 2 * room + 1;
+  EXPECT_EQ(spaced_sheet_bound(exact, o), 3);
+  EXPECT_EQ(spaced_sheet_bound(LayoutResult{}, o), 0);
+}
+
 TEST(Layout, RegistrationMarksHaveTheirKeepOutZoneToThemselves) {
   const auto& ex = test::unfolded_example("spot_350.obj");
   LayoutOptions o = at_size(160);

@@ -63,6 +63,28 @@ TEST(Pack, RectanglesFillASheetThenSpillOntoTheNext) {
   expect_valid(items, r, o);
 }
 
+TEST(Pack, ASheetThatFirstFitLeavesIsSavedByPackingTheItemsOfTwoSheetsAgain) {
+  // Strips most of the sheet's height, about 5, 4, 3, 3, 3 and 2 tenths of its width: largest first, 5 and 4
+  // share a sheet, the threes the next, and the 2 fits neither (three sheets); {5, 3, 2} and {4, 3, 3}
+  // fill two.
+  std::vector<PackItem> items;
+  for (double w : {47.0, 37.0, 27.0, 27.0, 27.0, 17.0}) {
+    items.push_back(rect(w, 8));
+    items.back().rotate = false;
+  }
+  PackOptions o;
+  o.area_mm = {{0, 0}, {100, 14}};  // too low for two strips one above the other
+  o.spacing_mm = 0.5;
+  o.shaken_orders = 0;
+  o.sheet_search_orders = 0;
+  EXPECT_EQ(pack_items(items, o).sheet_count, 3) << "first fit alone";
+  o.sheet_search_orders = 200;
+  const PackResult r = pack_items(items, o);
+  EXPECT_TRUE(r.unplaced.empty());
+  EXPECT_EQ(r.sheet_count, 2);
+  expect_valid(items, r, o);
+}
+
 TEST(Pack, ALongItemIsTurnedToFit) {
   std::vector<PackItem> items = {rect(140, 10)};
   PackOptions o;
@@ -222,6 +244,14 @@ TEST(PackBound, SquaresTooWideToGoSideBySideGoTwoToASheet) {
   // in 4 sheets).
   const std::vector<Polygon> cores(12, square(120));
   EXPECT_EQ(shape_sheet_bound(cores, Box2{{0, 0}, {190, 277}}), 6);
+}
+
+TEST(PackBound, SquaresAThirdOfTheSheetTallGoTwoToASheetAsTheRhombicuboctahedronsDo) {
+  // The rhombicuboctahedron at 250 mm: eighteen 103.6 mm squares on 190 x 277 mm. By area they fill four
+  // sheets, and a lattice spaced after their width proves six; every placement covers one of the two
+  // points at a third and two thirds of the height on the centre line, so no sheet takes three: nine.
+  const std::vector<Polygon> cores(18, square(103.6));
+  EXPECT_EQ(shape_sheet_bound(cores, Box2{{10, 10}, {200, 287}}), 9);
 }
 
 TEST(PackBound, NeverAboveTheSheetsThePackerUses) {

@@ -954,6 +954,12 @@ FurnitureOptions furniture_options_of(const LayoutOptions& o) {
   return furniture;
 }
 
+// The area an item's shape takes grown by half the spacing (SheetStats::spaced_area_mm2).
+double spaced_area_mm2(const PackItem& item, double spacing_mm) {
+  constexpr double kArcTolerance_mm = 0.01;
+  return std::fabs(total_area(polygon_offset(item.shape_mm, 0.5 * spacing_mm, kArcTolerance_mm)));
+}
+
 // Returns the sheets that got no 1 in square.
 std::vector<int> emit_furniture(const LayoutOptions& o, LayoutResult& r) {
   std::vector<Box2> keep_out;
@@ -978,6 +984,7 @@ void total_stats(double printable_mm2, LayoutResult& r) {
     r.overall.labels += st.labels;
     r.overall.piece_area_mm2 += st.piece_area_mm2;
     r.overall.tab_area_mm2 += st.tab_area_mm2;
+    r.overall.spaced_area_mm2 += st.spaced_area_mm2;
     if (st.min_label_mm > 0)
       r.overall.min_label_mm =
           r.overall.min_label_mm == 0 ? st.min_label_mm : std::min(r.overall.min_label_mm, st.min_label_mm);
@@ -1023,6 +1030,7 @@ std::vector<int> emit_sheets(const unfold::Unfolding& u, const LayoutOptions& o,
     const PackPlacement& place = k.packed.placements[p];
     emit_piece(d, x, p, SheetFrame{place.transform, paper_h}, r.sheets[place.sheet],
                r.sheet_stats[place.sheet]);
+    r.sheet_stats[place.sheet].spaced_area_mm2 += spaced_area_mm2(k.items[p], o.pack.spacing_mm);
   }
   report(o, "sheets", piece_count, piece_count);
   for (SeamId s : d.tabs.dropped) {
@@ -1203,6 +1211,17 @@ Box2 printable_area(const LayoutOptions& o) {
                 {std::min(area.max.x, reach.max.x), std::min(area.max.y, reach.max.y)}};
   }
   return area;
+}
+
+long spaced_sheet_bound(const LayoutResult& r, const LayoutOptions& o) {
+  const Box2 area = printable_area(o);
+  const double half_gap = 0.5 * o.pack.spacing_mm;
+  // The rectangle grown by half a gap: its sides pushed out, its corners rounded.
+  const double room_mm2 = (area.width() + 2 * half_gap) * (area.height() + 2 * half_gap) -
+                          (4 - std::numbers::pi) * half_gap * half_gap;
+  if (!(room_mm2 > 0) || !(r.overall.spaced_area_mm2 > 0)) return 0;
+  constexpr double kRounding = 1e-9;  // a share that fills whole sheets exactly is not one more
+  return static_cast<long>(std::ceil(r.overall.spaced_area_mm2 / room_mm2 - kRounding));
 }
 
 double narrow_slit_gap_mm(const LayoutOptions& o) {

@@ -276,10 +276,8 @@ double unit_random(std::uint64_t& state) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
-// The fewest sheets worth trying for: the items' cells (each at its leanest rotation, grown by half
-// the spacing) over the share of a sheet's cells that papercraft shapes can fill.
-long reachable_sheets(const std::vector<std::vector<Raster>>& rasters, long sheet_cells) {
-  constexpr double kReachableFill = 0.75;
+// The cells of all items, each at its leanest rotation (grown by half the spacing).
+double leanest_cells(const std::vector<std::vector<Raster>>& rasters) {
   double cells = 0;
   for (const std::vector<Raster>& item : rasters) {
     long least = 0;
@@ -287,9 +285,17 @@ long reachable_sheets(const std::vector<std::vector<Raster>>& rasters, long shee
       if (r.cells > 0 && (least == 0 || r.cells < least)) least = r.cells;
     cells += static_cast<double>(least);
   }
-  const double room = kReachableFill * static_cast<double>(sheet_cells);
-  return room > 0 ? std::max(1L, static_cast<long>(std::ceil(cells / room))) : 1;
+  return cells;
 }
+
+// The fewest sheets the items' cells could fill at `fill` of each sheet's cells.
+long sheets_at_fill(const std::vector<std::vector<Raster>>& rasters, long sheet_cells, double fill) {
+  const double room = fill * static_cast<double>(sheet_cells);
+  return room > 0 ? std::max(1L, static_cast<long>(std::ceil(leanest_cells(rasters) / room))) : 1;
+}
+
+// The share of a sheet's cells that papercraft shapes can fill: fewer sheets are not worth shaken orders.
+constexpr double kReachableFill = 0.75;
 
 // Shaken orders cost a packing run each, and a run costs more the more items there are: the count
 // shrinks with the items so a layout of many parts stays fast.
@@ -387,6 +393,8 @@ struct PlacementCount {
 struct OrderRun {
   PackResult result;
   int last_rows = 0;
+  std::vector<long> sheet_cells;  // per sheet: the cells its items take
+  std::vector<long> item_cells;   // per item: the cells it takes where placed
 };
 
 // The first open sheet with room takes the item at its best spot; a new sheet opens when none has
@@ -399,6 +407,7 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
   OrderRun run;
   PackResult& result = run.result;
   result.placements.resize(shapes.rasters.size());
+  run.item_cells.resize(shapes.rasters.size());
   int open = 0;
   int last_lowest = g.ny;
   for (std::size_t placed = 0; placed < order.size(); ++placed) {
@@ -422,6 +431,7 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
         }
         ++open;
         last_lowest = g.ny;
+        run.sheet_cells.push_back(0);
       }
     }
     if (!spot.raster) {
@@ -433,6 +443,8 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
       for (auto [i0, i1] : r.runs[j])
         sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
     if (sheet + 1 == open) last_lowest = std::min(last_lowest, spot.y);
+    run.sheet_cells[sheet] += r.cells;
+    run.item_cells[index] = r.cells;
     const Vec2 corner = g.min + Vec2{g.cell * spot.x, g.cell * spot.y};
     result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
     count.placed();
@@ -480,12 +492,19 @@ class OrderPacker {
 
   template <class GoOn>
   void run(const std::vector<std::vector<int>>& orders, BestRun& runs, GoOn go_on) {
+    run(orders, options_, count_, runs, go_on);
+  }
+
+  // The same with other options (at most a few sheets), placements counted elsewhere and another judge.
+  template <class Judge, class GoOn>
+  void run(const std::vector<std::vector<int>>& orders, const PackOptions& options, PlacementCount& count,
+           Judge& runs, GoOn go_on) {
     for (std::size_t first = 0; first < orders.size(); first += scratch_.size()) {
       if (runs.best && !go_on(*runs.best)) return;
       const int batch = static_cast<int>(std::min(scratch_.size(), orders.size() - first));
       std::vector<std::optional<OrderRun>> done(static_cast<std::size_t>(batch));
       run_parallel(batch, threads_, [&](int k) {
-        done[k] = pack_in_order(orders[first + k], shapes_, g_, blank_, options_, count_, scratch_[k]);
+        done[k] = pack_in_order(orders[first + k], shapes_, g_, blank_, options, count, scratch_[k]);
       });
       for (std::optional<OrderRun>& r : done) {
         if (runs.best && !go_on(*runs.best)) return;
@@ -504,6 +523,160 @@ class OrderPacker {
   std::vector<std::vector<SheetGrid>> scratch_;
 };
 
+// Which items each sheet of a packing holds, and the cells they take.
+struct SheetLoads {
+  std::vector<std::vector<int>> items;
+  std::vector<long> cells;
+};
+
+SheetLoads loads_of(const OrderRun& run) {
+  SheetLoads loads;
+  loads.items.resize(static_cast<std::size_t>(run.result.sheet_count));
+  loads.cells.resize(loads.items.size());
+  for (std::size_t i = 0; i < run.result.placements.size(); ++i) {
+    const int sheet = run.result.placements[i].sheet;
+    if (sheet < 0) continue;
+    loads.items[sheet].push_back(static_cast<int>(i));
+    loads.cells[sheet] += run.item_cells[i];
+  }
+  return loads;
+}
+
+// `subset` by decreasing key, ties in input order.
+std::vector<int> largest_first_of(std::vector<int> subset, const std::vector<double>& key) {
+  std::stable_sort(subset.begin(), subset.end(), [&](int a, int b) { return key[a] > key[b]; });
+  return subset;
+}
+
+// The orders a repacking of `items` tries: the three largest-first ones, then `shaken` shaken ones.
+std::vector<std::vector<int>> orders_of(const std::vector<int>& items, const ItemRasters& shapes, int shaken,
+                                        std::uint64_t& seed) {
+  std::vector<std::vector<int>> orders{largest_first_of(items, shapes.area),
+                                       largest_first_of(items, shapes.longest),
+                                       largest_first_of(items, shapes.girth)};
+  std::vector<double> key = shapes.area;
+  for (int k = 0; k < shaken; ++k) {
+    for (int i : items)
+      key[i] = shapes.area[i] * std::exp2(2 * unit_random(seed) - 1);
+    orders.push_back(largest_first_of(items, key));
+  }
+  return orders;
+}
+
+// Judges the repackings of a target sheet's items with its partners' onto the partners and one sheet
+// more: all placed, on fewest sheets, with least on the last one (the target's).
+struct EmptiestLast {
+  std::optional<OrderRun> best;
+  static auto rank(const OrderRun& r) {
+    return std::make_tuple(r.result.unplaced.size(), r.result.sheet_count,
+                           r.sheet_cells.empty() ? 0L : r.sheet_cells.back());
+  }
+  void consider(OrderRun run) {
+    if (!best || rank(run) < rank(*best)) best = std::move(run);
+  }
+};
+
+// The sets of sheets a target's items are packed with: each other sheet, then each pair of them,
+// emptiest first (they have the most room to take).
+std::vector<std::vector<int>> partner_sets(const SheetLoads& loads, int target) {
+  constexpr std::size_t kMostPairs = 21;
+  std::vector<int> others;
+  for (int s = 0; s < static_cast<int>(loads.cells.size()); ++s)
+    if (s != target) others.push_back(s);
+  std::stable_sort(others.begin(), others.end(),
+                   [&](int a, int b) { return loads.cells[a] < loads.cells[b]; });
+  std::vector<std::vector<int>> sets;
+  for (int s : others)
+    sets.push_back({s});
+  std::vector<std::vector<int>> pairs;
+  for (std::size_t a = 0; a < others.size(); ++a)
+    for (std::size_t b = a + 1; b < others.size(); ++b)
+      pairs.push_back({others[a], others[b]});
+  std::stable_sort(pairs.begin(), pairs.end(), [&](const std::vector<int>& x, const std::vector<int>& y) {
+    return loads.cells[x[0]] + loads.cells[x[1]] < loads.cells[y[0]] + loads.cells[y[1]];
+  });
+  if (pairs.size() > kMostPairs) pairs.resize(kMostPairs);
+  sets.insert(sets.end(), pairs.begin(), pairs.end());
+  return sets;
+}
+
+// Takes a repacking of `target` and `partners` (its sheet j is partners[j], its sheet past them the
+// target's) into `best`; a target left empty is removed and the sheets after it move down.
+void take_repacking(OrderRun& best, const OrderRun& repacked, const std::vector<int>& partners, int target) {
+  std::vector<int> sheet_of = partners;
+  sheet_of.push_back(target);
+  for (std::size_t i = 0; i < repacked.result.placements.size(); ++i) {
+    const PackPlacement& p = repacked.result.placements[i];
+    if (p.sheet < 0) continue;
+    best.result.placements[i] = {sheet_of[static_cast<std::size_t>(p.sheet)], p.transform};
+    best.item_cells[i] = repacked.item_cells[i];
+  }
+  if (repacked.result.sheet_count > static_cast<int>(partners.size())) return;
+  for (PackPlacement& p : best.result.placements)
+    if (p.sheet > target) --p.sheet;
+  --best.result.sheet_count;
+}
+
+// Sheets numbered fullest first, so that the emptiest is the last.
+void fullest_first(OrderRun& run) {
+  const SheetLoads loads = loads_of(run);
+  std::vector<int> by_cells(loads.cells.size());
+  std::iota(by_cells.begin(), by_cells.end(), 0);
+  std::stable_sort(by_cells.begin(), by_cells.end(),
+                   [&](int a, int b) { return loads.cells[a] > loads.cells[b]; });
+  std::vector<int> number(by_cells.size());
+  for (std::size_t k = 0; k < by_cells.size(); ++k)
+    number[static_cast<std::size_t>(by_cells[k])] = static_cast<int>(k);
+  for (PackPlacement& p : run.result.placements)
+    if (p.sheet >= 0) p.sheet = number[static_cast<std::size_t>(p.sheet)];
+  run.sheet_cells.assign(loads.cells.size(), 0);
+  for (std::size_t k = 0; k < by_cells.size(); ++k)
+    run.sheet_cells[k] = loads.cells[static_cast<std::size_t>(by_cells[k])];
+}
+
+// Parts placed one by one leave each sheet with gaps that no later part fits, though the parts of two
+// or three sheets packed together again often leave one of them emptier. The emptiest sheet's parts are
+// packed with those of one other sheet, then of two, onto those sheets and one more; a repacking that
+// leaves less on the last of them is taken, and one that leaves nothing saves the sheet. It ends when no
+// repacking helps, at `fewest` sheets, or when `most_orders` orders are spent.
+void empty_sheets(OrderRun& best, const ItemRasters& shapes, OrderPacker& packer, const PackOptions& options,
+                  long fewest, int most_orders) {
+  constexpr int kShakenPerSet = 5;
+  std::uint64_t seed = kShakeSeed;
+  PackOptions few = options;
+  few.progress = nullptr;
+  PlacementCount uncounted{few};  // the progress tells of the orders; this search comes on top
+  while (best.result.sheet_count > fewest && most_orders > 0) {
+    const SheetLoads loads = loads_of(best);
+    const int target =
+        static_cast<int>(std::min_element(loads.cells.begin(), loads.cells.end()) - loads.cells.begin());
+    bool took = false;
+    for (const std::vector<int>& partners : partner_sets(loads, target)) {
+      if (most_orders <= 0) break;
+      std::vector<int> items = loads.items[static_cast<std::size_t>(target)];
+      for (int s : partners)
+        items.insert(items.end(), loads.items[static_cast<std::size_t>(s)].begin(),
+                     loads.items[static_cast<std::size_t>(s)].end());
+      const std::vector<std::vector<int>> orders = orders_of(items, shapes, kShakenPerSet, seed);
+      most_orders -= static_cast<int>(orders.size());
+      few.max_sheets = static_cast<int>(partners.size()) + 1;
+      EmptiestLast runs;
+      const long before = loads.cells[static_cast<std::size_t>(target)];
+      packer.run(orders, few, uncounted, runs, [&](const OrderRun& r) {
+        return !(r.result.unplaced.empty() && r.result.sheet_count <= static_cast<int>(partners.size()));
+      });
+      const OrderRun& r = *runs.best;
+      if (!r.result.unplaced.empty()) continue;
+      const bool saved = r.result.sheet_count <= static_cast<int>(partners.size());
+      if (!saved && r.sheet_cells.back() >= before) continue;
+      take_repacking(best, r, partners, target);
+      took = true;
+      break;
+    }
+    if (!took) break;
+  }
+  fullest_first(best);
+}
 }  // namespace
 
 PackResult pack_items(std::span<const PackItem> items, const PackOptions& options) {
@@ -523,7 +696,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   // When that leaves more sheets than the items' cells could fill, shaken largest-first orders (each
   // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
   // seed: the same input always packs the same way.
-  const long bound = reachable_sheets(shapes.rasters, blank.free_cells());
+  const long bound = sheets_at_fill(shapes.rasters, blank.free_cells(), kReachableFill);
   std::uint64_t seed = kShakeSeed;
   std::vector<std::vector<int>> shaken_keys;
   for (int k = 0; k < shaken; ++k) {
@@ -535,6 +708,14 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   packer.run(shaken_keys, runs, [&](const OrderRun& best) {
     return best.result.unplaced.empty() && best.result.sheet_count > bound;
   });
+  OrderRun& best = *runs.best;
+  // Many items leave many gaps to fill and cost each order more: over `bench --layout` every sheet the
+  // search saved was on a packing of at most kMostItemsSearched items.
+  constexpr std::size_t kMostItemsSearched = 24;
+  if (best.result.unplaced.empty() && options.sheet_search_orders > 0 && items.size() <= kMostItemsSearched)
+    empty_sheets(best, shapes, packer, options,
+                 sheets_at_fill(shapes.rasters, blank.free_cells(), kReachableFill),
+                 options.sheet_search_orders);
   if (options.progress) options.progress(count.most, count.most);
   return std::move(runs.best->result);
 }

@@ -32,6 +32,7 @@ constexpr double kInset_mm = 1e-6;      // how deep a point must lie inside a co
 constexpr double kCongruent_mm = 1e-4;  // cores this close in shape share one count (eroded by it)
 constexpr int kMostPoints = 16;         // larger lattices cost more than they tell
 constexpr double kSteps[] = {0.98, 0.85, 0.7, 0.6, 0.49};  // lattice steps, shares of a core's width
+constexpr int kMostSpans = 4;                              // point sets that cut the area in up to 4 x 4
 constexpr int kMostShapes = 4;                             // lattices are spaced after the widest few cores
 constexpr double kNarrowShare = 1.0 / 8.0;  // cores narrower than this share of the area count nothing
 
@@ -246,6 +247,17 @@ std::vector<Vec2> lattice(const Box2& area, Vec2 step, bool shift_x, bool shift_
   return points;
 }
 
+// nx x ny points that cut the area into equal spans: (i + 1) / (nx + 1) of its width, alike in y. Cores
+// about a third of the area tall cover one of two such points wherever they lie (two to a sheet), which
+// no lattice spaced after their width tells.
+std::vector<Vec2> spans(const Box2& area, int nx, int ny) {
+  std::vector<Vec2> points;
+  for (int i = 1; i <= nx; ++i)
+    for (int j = 1; j <= ny; ++j)
+      points.push_back({area.min.x + area.width() * i / (nx + 1), area.min.y + area.height() * j / (ny + 1)});
+  return points;
+}
+
 long ceil_div(long a, long b) {
   return (a + b - 1) / b;
 }
@@ -256,24 +268,29 @@ long shape_sheet_bound(std::span<const Polygon> cores_mm, const Box2& area_mm) {
   if (area_mm.empty()) return 0;
   const std::vector<Shape> shapes = shapes_of(cores_mm, area_mm);
   long bound = 0;
+  const auto consider = [&](const std::vector<Vec2>& points) {
+    const long n = static_cast<long>(points.size());
+    if (n == 0 || n > kMostPoints) return;
+    // Upper bounds first (one rotation each): most point sets cannot beat the bound so far.
+    long most = 0;
+    for (const Shape& s : shapes)
+      most += s.items * least_cover_turning(s, points, area_mm, true);
+    if (ceil_div(most, n) <= bound) return;
+    long covered = 0;
+    for (const Shape& s : shapes)
+      covered += s.items * least_cover_turning(s, points, area_mm, false);
+    bound = std::max(bound, ceil_div(covered, n));
+  };
   for (std::size_t k = 0; k < std::min<std::size_t>(shapes.size(), kMostShapes); ++k)
     for (double share_x : kSteps)
       for (double share_y : kSteps)
-        for (int shift = 0; shift < 4; ++shift) {
-          const std::vector<Vec2> points =
-              lattice(area_mm, {share_x * shapes[k].width, share_y * shapes[k].width}, shift & 1, shift & 2);
-          const long n = static_cast<long>(points.size());
-          if (n == 0 || n > kMostPoints) continue;
-          // Upper bounds first (one rotation each): most lattices cannot beat the bound so far.
-          long most = 0;
-          for (const Shape& s : shapes)
-            most += s.items * least_cover_turning(s, points, area_mm, true);
-          if (ceil_div(most, n) <= bound) continue;
-          long covered = 0;
-          for (const Shape& s : shapes)
-            covered += s.items * least_cover_turning(s, points, area_mm, false);
-          bound = std::max(bound, ceil_div(covered, n));
-        }
+        for (int shift = 0; shift < 4; ++shift)
+          consider(
+              lattice(area_mm, {share_x * shapes[k].width, share_y * shapes[k].width}, shift & 1, shift & 2));
+  if (shapes.empty()) return bound;
+  for (int nx = 1; nx <= kMostSpans; ++nx)
+    for (int ny = 1; ny <= kMostSpans; ++ny)
+      consider(spans(area_mm, nx, ny));
   return bound;
 }
 

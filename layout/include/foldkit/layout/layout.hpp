@@ -94,6 +94,9 @@ struct LayoutOptions {
 struct SheetStats {
   double coverage = 0;  ///< area of pieces and tabs over the printable area (0..1)
   double piece_area_mm2 = 0, tab_area_mm2 = 0;
+  /// The pieces' packed outlines (with their tabs) grown by half the packing spacing: no two of these
+  /// overlap, so no packing fits more of them on a sheet than the printable area so grown holds.
+  double spaced_area_mm2 = 0;
   int pieces = 0, tabs = 0, dropped_tabs = 0, labels = 0;
   int split_tabs = 0;       ///< seams whose tab is split in two halves (each half counts in tabs)
   int leaders = 0;          ///< labels standing off their edge, tied to it by a leader
@@ -166,6 +169,11 @@ constexpr double kArrowLabelGap_mm = 1.6;
 
 /// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).
 Box2 printable_area(const LayoutOptions& options);
+
+/// The fewest sheets any packing of r's pieces (laid out with `options`) can take: their outlines grown
+/// by half the spacing (SheetStats::spaced_area_mm2) never overlap and lie within the printable area
+/// grown alike. Above the area bound where many or ragged pieces keep their gaps; 0 without pieces.
+long spaced_sheet_bound(const LayoutResult& r, const LayoutOptions& options);
 
 /// The rectangle (mm) a piece without its tabs must fit at its best rotation to be sure of a place on
 /// a sheet: the printable area less room for tabs, spacing and the packing raster on every side.

@@ -40,6 +40,10 @@ struct PackOptions {
   /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
   /// needs (fewer for many items); 0: none.
   int shaken_orders = 16;
+  /// Most orders spent emptying sheets once packed: the emptiest sheet's items are packed again with
+  /// those of one or two other sheets onto them and one more, keeping what leaves the last emptier;
+  /// a sheet left empty is saved. 0: none.
+  int sheet_search_orders = 60;
   /// Orders packed at once; 0: as many as the hardware has. The result does not depend on it.
   int threads = 0;
   /// When set, no more sheets than this are opened: items that do not fit are reported as unplaced.
@@ -73,8 +77,10 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
 /// may cut). Items lie inside `area_mm` at any rotation and position and never overlap. For a point set
 /// P in the area (a lattice), every placement of core i covers at least c_i points of P (found over
 /// all rotations and positions); items on one sheet cover disjoint points, so no packing needs fewer
-/// than ceil(sum c_i / |P|) sheets. The largest such count over a few lattices; 0 without items. A 150 mm
-/// square on A4 covers the centre wherever it lies, so six of them need six sheets (area: three).
+/// than ceil(sum c_i / |P|) sheets. The largest such count over a few lattices and grids that cut the
+/// area into equal spans; 0 without items. A 150 mm square on A4 covers the centre wherever it lies, so
+/// six of them need six sheets (area: three); a 104 mm square covers one of the two points at a third and
+/// two thirds of the centre line, so eighteen need nine (area: four).
 long shape_sheet_bound(std::span<const Polygon> cores_mm, const Box2& area_mm);
 
 /// The same with libnest2d (options.engine is ignored; keep-outs are not supported).
