@@ -645,6 +645,7 @@ void empty_sheets(OrderRun& best, const ItemRasters& shapes, OrderPacker& packer
   std::uint64_t seed = kShakeSeed;
   PackOptions few = options;
   few.progress = nullptr;
+  few.deadline.reset();           // the packing is complete: past the deadline the search stops, keeping it
   PlacementCount uncounted{few};  // the progress tells of the orders; this search comes on top
   while (best.result.sheet_count > fewest && most_orders > 0) {
     const SheetLoads loads = loads_of(best);
@@ -652,7 +653,8 @@ void empty_sheets(OrderRun& best, const ItemRasters& shapes, OrderPacker& packer
         static_cast<int>(std::min_element(loads.cells.begin(), loads.cells.end()) - loads.cells.begin());
     bool took = false;
     for (const std::vector<int>& partners : partner_sets(loads, target)) {
-      if (most_orders <= 0) break;
+      if (most_orders <= 0 || (options.deadline && std::chrono::steady_clock::now() > *options.deadline))
+        break;
       std::vector<int> items = loads.items[static_cast<std::size_t>(target)];
       for (int s : partners)
         items.insert(items.end(), loads.items[static_cast<std::size_t>(s)].begin(),
