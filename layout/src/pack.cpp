@@ -455,14 +455,6 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
   return run;
 }
 
-// Items by decreasing key, ties in input order.
-std::vector<int> largest_first(const std::vector<double>& key) {
-  std::vector<int> order(key.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] > key[b]; });
-  return order;
-}
-
 // The best run so far: the one that places most, on fewest sheets, leaving the last sheet emptiest (so
 // the others are fullest).
 struct BestRun {
@@ -548,14 +540,18 @@ std::vector<int> largest_first_of(std::vector<int> subset, const std::vector<dou
   return subset;
 }
 
-// The orders a repacking of `items` tries: the three largest-first ones, then `shaken` shaken ones.
-std::vector<std::vector<int>> orders_of(const std::vector<int>& items, const ItemRasters& shapes, int shaken,
-                                        std::uint64_t& seed) {
-  std::vector<std::vector<int>> orders{largest_first_of(items, shapes.area),
-                                       largest_first_of(items, shapes.longest),
-                                       largest_first_of(items, shapes.girth)};
+// The three largest-first orders of `items`: by area, by longest side, by girth.
+std::vector<std::vector<int>> plain_orders_of(const std::vector<int>& items, const ItemRasters& shapes) {
+  return {largest_first_of(items, shapes.area), largest_first_of(items, shapes.longest),
+          largest_first_of(items, shapes.girth)};
+}
+
+// `count` largest-first orders of `items`, each area scaled by a pseudo-random factor within [1/2, 2].
+std::vector<std::vector<int>> shaken_orders_of(const std::vector<int>& items, const ItemRasters& shapes,
+                                               int count, std::uint64_t& seed) {
+  std::vector<std::vector<int>> orders;
   std::vector<double> key = shapes.area;
-  for (int k = 0; k < shaken; ++k) {
+  for (int k = 0; k < count; ++k) {
     for (int i : items)
       key[i] = shapes.area[i] * std::exp2(2 * unit_random(seed) - 1);
     orders.push_back(largest_first_of(items, key));
@@ -659,7 +655,9 @@ void empty_sheets(OrderRun& best, const ItemRasters& shapes, OrderPacker& packer
       for (int s : partners)
         items.insert(items.end(), loads.items[static_cast<std::size_t>(s)].begin(),
                      loads.items[static_cast<std::size_t>(s)].end());
-      const std::vector<std::vector<int>> orders = orders_of(items, shapes, kShakenPerSet, seed);
+      std::vector<std::vector<int>> orders = plain_orders_of(items, shapes);
+      for (std::vector<int>& shaken : shaken_orders_of(items, shapes, kShakenPerSet, seed))
+        orders.push_back(std::move(shaken));
       most_orders -= static_cast<int>(orders.size());
       few.max_sheets = static_cast<int>(partners.size()) + 1;
       EmptiestLast runs;
@@ -690,24 +688,17 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   PlacementCount count{options, static_cast<long>(3 + shaken) * static_cast<long>(items.size())};
 
   // Greedy packing depends on the order: a few largest-first orders, keeping the best.
+  std::vector<int> all(items.size());
+  std::iota(all.begin(), all.end(), 0);
   BestRun runs;
   OrderPacker packer(shapes, g, blank, options, count);
-  packer.run({largest_first(shapes.area), largest_first(shapes.longest), largest_first(shapes.girth)}, runs,
-             [](const OrderRun&) { return true; });
+  packer.run(plain_orders_of(all, shapes), runs, [](const OrderRun&) { return true; });
 
-  // When that leaves more sheets than the items' cells could fill, shaken largest-first orders (each
-  // area scaled by a pseudo-random factor within [1/2, 2]) often save the last one. A fixed count and
-  // seed: the same input always packs the same way.
+  // When that leaves more sheets than the items' cells could fill, shaken largest-first orders often
+  // save the last one. A fixed count and seed: the same input always packs the same way.
   const long bound = sheets_at_fill(shapes.rasters, blank.free_cells(), kReachableFill);
   std::uint64_t seed = kShakeSeed;
-  std::vector<std::vector<int>> shaken_keys;
-  for (int k = 0; k < shaken; ++k) {
-    std::vector<double> key = shapes.area;
-    for (double& a : key)
-      a *= std::exp2(2 * unit_random(seed) - 1);
-    shaken_keys.push_back(largest_first(key));
-  }
-  packer.run(shaken_keys, runs, [&](const OrderRun& best) {
+  packer.run(shaken_orders_of(all, shapes, shaken, seed), runs, [&](const OrderRun& best) {
     return best.result.unplaced.empty() && best.result.sheet_count > bound;
   });
   OrderRun& best = *runs.best;
@@ -715,9 +706,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   // search saved was on a packing of at most kMostItemsSearched items.
   constexpr std::size_t kMostItemsSearched = 24;
   if (best.result.unplaced.empty() && options.sheet_search_orders > 0 && items.size() <= kMostItemsSearched)
-    empty_sheets(best, shapes, packer, options,
-                 sheets_at_fill(shapes.rasters, blank.free_cells(), kReachableFill),
-                 options.sheet_search_orders);
+    empty_sheets(best, shapes, packer, options, bound, options.sheet_search_orders);
   if (options.progress) options.progress(count.most, count.most);
   return std::move(runs.best->result);
 }
