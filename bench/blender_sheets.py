@@ -18,6 +18,7 @@ import glob
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -87,6 +88,11 @@ def main(argv):
     if not os.path.isdir(corpus):
         print(f'blender_sheets: no corpus at {corpus}: skipped')
         return 0
+    missing = [tool for tool in ('blender', 'pdfinfo') if not shutil.which(tool)]
+    if missing:
+        print(f'blender_sheets: {" and ".join(missing)} not found (apt-get install blender poppler-utils)',
+              file=sys.stderr)
+        return 1
     foldkit = {}
     if bench_json:
         for row in json.load(open(bench_json))['rows']:
