@@ -14,6 +14,7 @@ Prints CSV: mesh,face_count,size_mm,blender_sheet_count,blender_s,foldkit_sheet_
 Needs blender (apt-get install blender) and pdfinfo (poppler-utils). Run under Blender it exports one
 mesh: blender -b --factory-startup --python bench/blender_sheets.py -- MESH SIZE_MM OUT.pdf
 """
+import csv
 import glob
 import json
 import os
@@ -29,6 +30,7 @@ MARGIN_M = 0.010
 TAB_M = 0.005
 CAGE_SLACK_M = 0.020  # tabs on both sides and the island's title
 A4_M = (0.210, 0.297)
+BLENDER_TIMEOUT_S = 900
 
 
 def export_in_blender(mesh, size_mm, out):
@@ -60,8 +62,12 @@ def blender_run(mesh, size_mm):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, 'net.pdf')
         start = time.monotonic()
-        run = subprocess.run(['blender', '-b', '--factory-startup', '--python', os.path.abspath(__file__), '--',
-                              mesh, str(size_mm), out], capture_output=True, text=True, timeout=900)
+        try:
+            run = subprocess.run(['blender', '-b', '--factory-startup', '--python', os.path.abspath(__file__),
+                                  '--', mesh, str(size_mm), out], capture_output=True, text=True,
+                                 timeout=BLENDER_TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            return 0, time.monotonic() - start, f'no result within {BLENDER_TIMEOUT_S} s'
         seconds = time.monotonic() - start
         if not os.path.exists(out):
             log = run.stdout + run.stderr
@@ -99,7 +105,9 @@ def main(argv):
             if 'sheet_count' in row:
                 foldkit[(row['mesh'], float(row['size_mm']))] = row['sheet_count']
     files = sorted(glob.glob(os.path.join(corpus, '*.obj')) + glob.glob(os.path.join(corpus, 'lowpoly', '*.obj')))
-    print('mesh,face_count,size_mm,blender_sheet_count,blender_s,foldkit_sheet_count,error')
+    out = csv.writer(sys.stdout, lineterminator='\n')
+    out.writerow(['mesh', 'face_count', 'size_mm', 'blender_sheet_count', 'blender_s', 'foldkit_sheet_count',
+                  'error'])
     both = [0, 0]  # sheets over the runs both finished: Blender, foldkit
     for path in files:
         faces = faces_of(path)
@@ -112,7 +120,8 @@ def main(argv):
             if sheets and ours != '':
                 both[0] += sheets
                 both[1] += ours
-            print(f'{name},{faces},{size},{sheets},{seconds:.1f},{ours},"{error}"', flush=True)
+            out.writerow([name, faces, size, sheets, f'{seconds:.1f}', ours, error])
+            sys.stdout.flush()
     if bench_json:
         print(f'# runs both finished: Blender {both[0]} sheets, foldkit {both[1]}')
     return 0
