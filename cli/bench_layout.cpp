@@ -136,7 +136,7 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
 // The figures the layout targets are judged by, over the rows without an error.
 struct Totals {
   long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0;
-  long shape_bound = 0;     ///< sum of the largest of the three bounds per run
+  long larger_bound = 0;    ///< sum of the largest of the three bounds per run
   long over = 0;            ///< runs more than one sheet over the area bound
   long over_reachable = 0;  ///< runs more than one sheet over the largest bound
   long unreachable = 0;     ///< runs whose shape or spaced bound exceeds the area bound
@@ -154,7 +154,7 @@ Totals totals(const std::vector<Row>& rows) {
     t.sheets += r.sheets;
     t.bound += r.bound;
     const long larger = r.larger_bound();
-    t.shape_bound += larger;
+    t.larger_bound += larger;
     t.over += r.sheets > r.bound + 1;
     t.over_reachable += r.sheets > larger + 1;
     t.unreachable += larger > r.bound;
@@ -195,7 +195,7 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                    {"area_bound_sheet_count", t.bound},
                    {"sheets_over_bound_ratio", t.ratio()},
                    {"runs_more_than_one_over_count", t.over},
-                   {"larger_bound_sheet_count", t.shape_bound},
+                   {"larger_bound_sheet_count", t.larger_bound},
                    {"runs_area_bound_unreachable_count", t.unreachable},
                    {"runs_more_than_one_over_larger_bound_count", t.over_reachable},
                    {"median_coverage", median(t.coverage)},
@@ -216,8 +216,8 @@ void print_totals(const Totals& t) {
       "or gaps leave the area bound out of reach, larger bound %ld (x%.2f), %ld runs more than one sheet "
       "over it; "
       "median coverage %.0f%%, seams without a tab %s, layout %.1f s (CPU %.1f s)\n",
-      t.sheets, t.bound, t.ratio(), t.over, t.unreachable, t.shape_bound,
-      t.shape_bound > 0 ? double(t.sheets) / double(t.shape_bound) : NAN, t.over_reachable,
+      t.sheets, t.bound, t.ratio(), t.over, t.unreachable, t.larger_bound,
+      t.larger_bound > 0 ? double(t.sheets) / double(t.larger_bound) : NAN, t.over_reachable,
       100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
 }
 

@@ -393,8 +393,7 @@ struct PlacementCount {
 struct OrderRun {
   PackResult result;
   int last_rows = 0;
-  std::vector<long> sheet_cells;  // per sheet: the cells its items take
-  std::vector<long> item_cells;   // per item: the cells it takes where placed
+  std::vector<long> item_cells;  // per item: the cells it takes where placed
 };
 
 // The first open sheet with room takes the item at its best spot; a new sheet opens when none has
@@ -431,7 +430,6 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
         }
         ++open;
         last_lowest = g.ny;
-        run.sheet_cells.push_back(0);
       }
     }
     if (!spot.raster) {
@@ -443,7 +441,6 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
       for (auto [i0, i1] : r.runs[j])
         sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
     if (sheet + 1 == open) last_lowest = std::min(last_lowest, spot.y);
-    run.sheet_cells[sheet] += r.cells;
     run.item_cells[index] = r.cells;
     const Vec2 corner = g.min + Vec2{g.cell * spot.x, g.cell * spot.y};
     result.placements[index] = {sheet, Rigid2{r.angle_rad, corner - r.origin}};
@@ -559,13 +556,20 @@ std::vector<std::vector<int>> shaken_orders_of(const std::vector<int>& items, co
   return orders;
 }
 
+// The cells the items on a run's last sheet take (0 without sheets).
+long last_sheet_cells(const OrderRun& run) {
+  long cells = 0;
+  for (std::size_t i = 0; i < run.result.placements.size(); ++i)
+    if (run.result.placements[i].sheet == run.result.sheet_count - 1) cells += run.item_cells[i];
+  return cells;
+}
+
 // Judges the repackings of a target sheet's items with its partners' onto the partners and one sheet
 // more: all placed, on fewest sheets, with least on the last one (the target's).
 struct EmptiestLast {
   std::optional<OrderRun> best;
   static auto rank(const OrderRun& r) {
-    return std::make_tuple(r.result.unplaced.size(), r.result.sheet_count,
-                           r.sheet_cells.empty() ? 0L : r.sheet_cells.back());
+    return std::make_tuple(r.result.unplaced.size(), r.result.sheet_count, last_sheet_cells(r));
   }
   void consider(OrderRun run) {
     if (!best || rank(run) < rank(*best)) best = std::move(run);
@@ -625,9 +629,6 @@ void fullest_first(OrderRun& run) {
     number[static_cast<std::size_t>(by_cells[k])] = static_cast<int>(k);
   for (PackPlacement& p : run.result.placements)
     if (p.sheet >= 0) p.sheet = number[static_cast<std::size_t>(p.sheet)];
-  run.sheet_cells.assign(loads.cells.size(), 0);
-  for (std::size_t k = 0; k < by_cells.size(); ++k)
-    run.sheet_cells[k] = loads.cells[static_cast<std::size_t>(by_cells[k])];
 }
 
 // Parts placed one by one leave each sheet with gaps that no later part fits, though the parts of two
@@ -668,7 +669,7 @@ void empty_sheets(OrderRun& best, const ItemRasters& shapes, OrderPacker& packer
       const OrderRun& r = *runs.best;
       if (!r.result.unplaced.empty()) continue;
       const bool saved = r.result.sheet_count <= static_cast<int>(partners.size());
-      if (!saved && r.sheet_cells.back() >= before) continue;
+      if (!saved && last_sheet_cells(r) >= before) continue;
       take_repacking(best, r, partners, target);
       took = true;
       break;
