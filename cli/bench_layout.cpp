@@ -19,8 +19,10 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "json_report.hpp"
+#include "median.hpp"
 #include "pipeline.hpp"
 #include "print_cuts.hpp"
+#include "sheet_fill.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -38,6 +40,7 @@ struct Row {
   long larger_bound() const { return std::max({bound, shape_bound, spaced_bound}); }
   int parts = 0, seams = 0, no_tab = 0;
   double coverage = 0, seconds = 0;
+  double used_sheets = 0;  ///< area of parts and tabs over one printable area
   double cpu_seconds = 0;  ///< process CPU time: the machine may be shared, the wall clock then lies
 };
 
@@ -78,17 +81,12 @@ Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
     row.seams = chosen.seam_count();
     row.no_tab = r.overall.dropped_tabs;
     row.coverage = r.overall.coverage;
+    row.used_sheets = used / (area.width() * area.height());
   } catch (const Error& e) {
     row.error = e.what();
     stop();
   }
   return row;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 void print_row(const Row& row) {
@@ -133,6 +131,11 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
   }
 }
 
+// The layout targets on the totals (issue 11): sheets at most this many times the sum of the area
+// bounds, and this median coverage.
+constexpr double kSheetRatioTarget = 1.15;
+constexpr double kMedianCoverageTarget = 0.55;
+
 // The figures the layout targets are judged by, over the rows without an error.
 struct Totals {
   long sheets = 0, bound = 0, mid_seams = 0, mid_no_tab = 0;
@@ -142,6 +145,7 @@ struct Totals {
   long unreachable = 0;     ///< runs whose shape or spaced bound exceeds the area bound
   double seconds = 0, cpu_seconds = 0;
   std::vector<double> coverage;
+  std::vector<FilledRun> filled;  ///< the runs as the fill yardstick sees them (sheet_fill.hpp)
   double ratio() const { return bound > 0 ? double(sheets) / double(bound) : NAN; }
   /// seams without a tab over the runs of 350-1,000 faces at 150 mm
   double share() const { return mid_seams > 0 ? double(mid_no_tab) / double(mid_seams) : NAN; }
@@ -161,12 +165,25 @@ Totals totals(const std::vector<Row>& rows) {
     t.seconds += r.seconds;
     t.cpu_seconds += r.cpu_seconds;
     t.coverage.push_back(r.coverage);
+    t.filled.push_back({r.used_sheets, r.bound});
     if (r.size_mm == 150 && r.faces >= 350 && r.faces <= 1000) {
       t.mid_seams += r.seams;
       t.mid_no_tab += r.no_tab;
     }
   }
   return t;
+}
+
+// The fill of every sheet the totals correspond to, and the fills the two targets ask for.
+struct Fills {
+  double now = NAN, ratio_target = NAN, coverage_target = NAN;
+};
+
+Fills fills(const Totals& t) {
+  if (t.filled.empty()) return {};
+  const auto ratio_sheets = static_cast<long>(std::floor(kSheetRatioTarget * static_cast<double>(t.bound)));
+  return {fill_for_sheets(t.filled, t.sheets), fill_for_sheets(t.filled, ratio_sheets),
+          fill_for_median_coverage(t.filled, kMedianCoverageTarget)};
 }
 
 json bench_json(const std::vector<Row>& rows, const Totals& t) {
@@ -186,11 +203,13 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                 {"spaced_bound_sheet_count", r.spaced_bound},
                 {"part_count", r.parts},
                 {"coverage", r.coverage},
+                {"used_area_ratio", r.used_sheets},
                 {"seam_count", r.seams},
                 {"seams_without_tab_count", r.no_tab}});
     }
     out["rows"].push_back(j);
   }
+  const Fills f = fills(t);
   out["totals"] = {{"sheet_count", t.sheets},
                    {"area_bound_sheet_count", t.bound},
                    {"sheets_over_bound_ratio", t.ratio()},
@@ -199,6 +218,10 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                    {"runs_area_bound_unreachable_count", t.unreachable},
                    {"runs_more_than_one_over_larger_bound_count", t.over_reachable},
                    {"median_coverage", median(t.coverage)},
+                   // every sheet filled to this share of its printable area gives the sheets counted
+                   {"equivalent_fill_fraction", f.now},
+                   {"sheet_ratio_target_fill_fraction", f.ratio_target},
+                   {"median_coverage_target_fill_fraction", f.coverage_target},
                    // over the runs of 350-1,000 faces at 150 mm
                    {"seams_without_tab_fraction", t.share()},
                    {"wall_s", t.seconds},
@@ -219,6 +242,13 @@ void print_totals(const Totals& t) {
       t.sheets, t.bound, t.ratio(), t.over, t.unreachable, t.larger_bound,
       t.larger_bound > 0 ? double(t.sheets) / double(t.larger_bound) : NAN, t.over_reachable,
       100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
+  const Fills f = fills(t);
+  if (!std::isnan(f.now))
+    std::printf(
+        "fill: these sheets are every sheet filled to %.1f%% of its printable area; x%.2f of the area bound "
+        "needs %.1f%%, median coverage %.0f%% needs %.1f%%\n",
+        100 * f.now, kSheetRatioTarget, 100 * f.ratio_target, 100 * kMedianCoverageTarget,
+        100 * f.coverage_target);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@
 #include "foldkit/unfold/unfolding.hpp"
 #include "json_report.hpp"
 #include "length_option.hpp"
+#include "median.hpp"
 #include "unfold_options.hpp"
 
 namespace foldkit::cli {
@@ -165,12 +166,6 @@ std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 using CsvRows = std::vector<std::map<std::string, std::string>>;

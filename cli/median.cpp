@@ -1,0 +1,15 @@
+#include "median.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace foldkit::cli {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return NAN;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace foldkit::cli
