@@ -174,6 +174,22 @@ Totals totals(const std::vector<Row>& rows) {
   return t;
 }
 
+// The fill a run's parts and tabs would need on one sheet fewer; infinite on one sheet.
+double one_sheet_fewer_fill(const Row& r) {
+  return r.sheets > 1 ? r.used_sheets / static_cast<double>(r.sheets - 1) : INFINITY;
+}
+
+// The runs above all their bounds whose sheet fewer needs less than `fill`, the fill the whole set
+// reaches: where the packing did worse than it does on the set, the first places to look.
+std::vector<const Row*> below_par(const std::vector<Row>& rows, double fill) {
+  std::vector<const Row*> out;
+  for (const Row& r : rows)
+    if (r.error.empty() && r.sheets > r.larger_bound() && one_sheet_fewer_fill(r) < fill) out.push_back(&r);
+  std::sort(out.begin(), out.end(),
+            [](const Row* a, const Row* b) { return one_sheet_fewer_fill(*a) < one_sheet_fewer_fill(*b); });
+  return out;
+}
+
 // The fill of every sheet the totals correspond to, and the fills the two targets ask for.
 struct Fills {
   double now = NAN, ratio_target = NAN, coverage_target = NAN;
@@ -210,6 +226,11 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
     out["rows"].push_back(j);
   }
   const Fills f = fills(t);
+  json par = json::array();
+  for (const Row* r : below_par(rows, f.now))
+    par.push_back({{"mesh", r->mesh},
+                   {"size_mm", r->size_mm},
+                   {"one_sheet_fewer_fill_fraction", one_sheet_fewer_fill(*r)}});
   out["totals"] = {{"sheet_count", t.sheets},
                    {"area_bound_sheet_count", t.bound},
                    {"sheets_over_bound_ratio", t.ratio()},
@@ -222,6 +243,8 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                    {"equivalent_fill_fraction", f.now},
                    {"sheet_ratio_target_fill_fraction", f.ratio_target},
                    {"median_coverage_target_fill_fraction", f.coverage_target},
+                   // runs above their bounds whose sheet fewer needs less than the equivalent fill
+                   {"below_par_runs", par},
                    // over the runs of 350-1,000 faces at 150 mm
                    {"seams_without_tab_fraction", t.share()},
                    {"wall_s", t.seconds},
@@ -229,7 +252,7 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
   return out;
 }
 
-void print_totals(const Totals& t) {
+void print_totals(const std::vector<Row>& rows, const Totals& t) {
   char no_tab[96] = "no mesh of 350-1,000 faces at 150 mm";
   if (t.mid_seams > 0)
     std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%) on 350-1,000 faces at 150 mm", t.mid_no_tab,
@@ -249,6 +272,13 @@ void print_totals(const Totals& t) {
         "needs %.1f%%, median coverage %.0f%% needs %.1f%%\n",
         100 * f.now, kSheetRatioTarget, 100 * f.ratio_target, 100 * kMedianCoverageTarget,
         100 * f.coverage_target);
+  const std::vector<const Row*> par = below_par(rows, f.now);
+  if (par.empty()) return;
+  std::printf("below par (a sheet fewer needs less than %.1f%%):", 100 * f.now);
+  for (std::size_t k = 0; k < par.size(); ++k)
+    std::printf("%s %s at %.0f mm %.1f%%", k ? ";" : "", par[k]->mesh.c_str(), par[k]->size_mm,
+                100 * one_sheet_fewer_fill(*par[k]));
+  std::printf("\n");
 }
 
 }  // namespace
@@ -272,7 +302,7 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (a.json_out)
     std::cout << versioned(bench_json(rows, t)).dump(2) << "\n";
   else
-    print_totals(t);
+    print_totals(rows, t);
 }
 
 }  // namespace foldkit::cli
