@@ -26,11 +26,17 @@ unfold::PartOptions largest_parts(const unfold::Unfolding& u, const layout::Layo
   return p;
 }
 
+// How the tabs of a case pick their sides: as planned by default, or alternating only (a case found
+// before tabs went into bays, whose point is not the tabs).
+enum class TabSides { Planned, Alternating };
+
 // The parts choose_parts picks for examples/<name>, unfolded by the search, at `size_mm`.
-cli::ChosenParts chosen_for(const std::string& name, double size_mm, const cli::ChooseOptions& choose = {}) {
+cli::ChosenParts chosen_for(const std::string& name, double size_mm, const cli::ChooseOptions& choose = {},
+                            TabSides sides = TabSides::Planned) {
   const auto& ex = test::unfolded_example(name, unfold::Method::Search);
   layout::LayoutOptions o;
   o.size_mm = size_mm;
+  o.tab.into_bays = sides == TabSides::Planned;
   return cli::choose_parts(ex.mesh, ex.unfolding, o, {}, choose);
 }
 
@@ -40,6 +46,20 @@ cli::ChooseOptions as_split() {
   o.join_on_a_sheet = false;
   o.open_slits = cli::SlitOpening::None;
   return o;
+}
+
+// A low-poly model of tests/data/lowpoly and its default unfolding (one thread).
+struct LowPoly {
+  unfold::Mesh mesh;
+  unfold::Unfolding unfolding;
+};
+
+LowPoly unfolded_low_poly(const std::string& file) {
+  unfold::UnfoldOptions uo;
+  uo.threads = 1;
+  LowPoly m{unfold::load_mesh(test::source_dir() / "tests" / "data" / "lowpoly" / file).mesh, {}};
+  m.unfolding = unfold::unfold_mesh(m.mesh, uo).unfolding;
+  return m;
 }
 
 }  // namespace
@@ -122,8 +142,8 @@ TEST(ChooseParts, SlitsAreOpenedWhereTheTabsGainedOutnumberTheLabelsTheyLeaveUnc
   closed.join_on_a_sheet = false;
   cli::ChooseOptions open = closed;
   closed.open_slits = cli::SlitOpening::None;
-  const cli::ChosenParts before = chosen_for("penguin_500.obj", 110, closed);
-  const cli::ChosenParts after = chosen_for("penguin_500.obj", 110, open);
+  const cli::ChosenParts before = chosen_for("penguin_500.obj", 110, closed, TabSides::Alternating);
+  const cli::ChosenParts after = chosen_for("penguin_500.obj", 110, open, TabSides::Alternating);
   ASSERT_TRUE(before.layout && after.layout);
   const int tabs_gained = before.layout->overall.dropped_tabs - after.layout->overall.dropped_tabs;
   const int labels_lost = after.layout->label_audit.unclear() - before.layout->label_audit.unclear();
@@ -267,11 +287,9 @@ TEST(ChooseParts, EachLayoutTriedReportsItsProgressUnderItsOwnNumber) {
 TEST(ChooseParts, TheBoundCountsFacesThatCannotShareASheetAndTheChoiceReachesIt) {
   // An 150 mm cube on A4: its six squares take three sheets by area but one sheet each by shape, and
   // the parts chosen take exactly that many.
-  unfold::UnfoldOptions uo;
-  uo.threads = 1;
-  const unfold::Mesh mesh =
-      unfold::load_mesh(test::source_dir() / "tests" / "data" / "lowpoly" / "cube.obj").mesh;
-  const unfold::Unfolding u = unfold::unfold_mesh(mesh, uo).unfolding;
+  const LowPoly cube = unfolded_low_poly("cube.obj");
+  const unfold::Mesh& mesh = cube.mesh;
+  const unfold::Unfolding& u = cube.unfolding;
   layout::LayoutOptions o;
   o.size_mm = 150;
   const std::vector<layout::Polygon> cores = cli::flat_face_cores_mm(u, *o.size_mm / u.model_extent);
@@ -282,6 +300,22 @@ TEST(ChooseParts, TheBoundCountsFacesThatCannotShareASheetAndTheChoiceReachesIt)
   const cli::ChosenParts chosen = cli::choose_parts(mesh, u, o);
   ASSERT_TRUE(chosen.layout);
   EXPECT_EQ(sheets_with_pieces(*chosen.layout), 6);
+}
+
+TEST(ChooseParts, WhereTabsInBaysLeaveTheLayoutSheetsAboveItsBoundThePartsAreChosenAgainWithAlternatingTabs) {
+  // The football's hexagons at 250 mm: with its tabs in the notches between faces, where neighbours'
+  // corners nest otherwise, every partition took 7 sheets; with alternating tabs one takes 6.
+  const LowPoly ball = unfolded_low_poly("football.obj");
+  layout::LayoutOptions planned;
+  planned.size_mm = 250;
+  layout::LayoutOptions alternating = planned;
+  alternating.tab.into_bays = false;
+  const cli::ChosenParts chosen = cli::choose_parts(ball.mesh, ball.unfolding, planned);
+  const cli::ChosenParts alternated = cli::choose_parts(ball.mesh, ball.unfolding, alternating);
+  ASSERT_TRUE(chosen.layout && alternated.layout);
+  EXPECT_EQ(sheets_with_pieces(*alternated.layout), 6);
+  EXPECT_EQ(sheets_with_pieces(*chosen.layout), sheets_with_pieces(*alternated.layout));
+  EXPECT_TRUE(unfold::check_unfolding(ball.mesh, chosen.unfolding).empty());
 }
 
 TEST(ChooseParts, TilesOfTheRoomWithTheirBordersFillThePrintableArea) {
@@ -312,8 +346,8 @@ TEST(ChooseParts, PatchesGrownOverTheSurfaceAreKeptWhenPartsCutFromTheNetNeedASh
   // Bob at 180 mm: parts cut from its one-piece net take 3 sheets, compact patches of the surface 2.
   cli::ChooseOptions net_only;
   net_only.patches = false;
-  const cli::ChosenParts cut = chosen_for("bob_350.obj", 180, net_only);
-  const cli::ChosenParts chosen = chosen_for("bob_350.obj", 180);
+  const cli::ChosenParts cut = chosen_for("bob_350.obj", 180, net_only, TabSides::Alternating);
+  const cli::ChosenParts chosen = chosen_for("bob_350.obj", 180, {}, TabSides::Alternating);
   const auto& ex = test::unfolded_example("bob_350.obj", unfold::Method::Search);
   ASSERT_TRUE(cut.layout && chosen.layout);
   EXPECT_FALSE(cut.patches);

@@ -128,6 +128,72 @@ TEST(Tabs, AlongAZipperBetweenTwoPiecesTheTabsChangeSidesFromSeamToSeam) {
   EXPECT_EQ(piece_of_tab, (std::vector<int>{0, 1, 0})) << "tab, no tab, tab along piece 0's edge";
 }
 
+namespace {
+
+// A piece of one loop through `corners` (counter-clockwise), its outline edges numbered in order, made of
+// the given triangles.
+ScaledPiece piece_of(int index, const std::vector<Vec2>& corners, std::vector<Triangle2> triangles) {
+  ScaledPiece p;
+  p.index = index;
+  OutlineLoop loop;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    loop.push_back({static_cast<int>(i), -1, -1, corners[i], corners[(i + 1) % corners.size()]});
+  p.outline_mm = {loop};
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    p.faces.push_back(static_cast<int>(k));
+    p.area_mm2 += signed_area(triangles[k]);
+  }
+  p.triangles_mm = std::move(triangles);
+  return p;
+}
+
+// A U of 30 x 30 mm open at the top (its bay 10 mm wide and 20 deep, outline edge 4 the bay's floor)
+// and a 10 mm square, glued along the bay's floor and the square's bottom edge. sides[0] is the
+// square's, so alternation alone would put the tab there, out past the square.
+struct UAndSquare {
+  std::vector<ScaledPiece> pieces;
+  std::vector<Seam> seams;
+};
+
+UAndSquare u_and_square() {
+  auto rect = [](double x0, double y0, double x1, double y1) {
+    return std::vector<Triangle2>{Triangle2{Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x1, y1}},
+                                  Triangle2{Vec2{x0, y0}, Vec2{x1, y1}, Vec2{x0, y1}}};
+  };
+  std::vector<Triangle2> u = rect(0, 0, 30, 10);
+  for (const std::vector<Triangle2>& arm : {rect(0, 10, 10, 30), rect(20, 10, 30, 30)})
+    u.insert(u.end(), arm.begin(), arm.end());
+  UAndSquare s;
+  s.pieces.push_back(
+      piece_of(0, {{0, 0}, {30, 0}, {30, 30}, {20, 30}, {20, 10}, {10, 10}, {10, 30}, {0, 30}}, u));
+  s.pieces.push_back(piece_of(1, {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, rect(0, 0, 10, 10)));
+  Seam seam;
+  seam.edge = 0;
+  seam.sides = {SeamSide{1, 0, 0}, SeamSide{0, 0, 4}};
+  s.seams.push_back(seam);
+  return s;
+}
+
+}  // namespace
+
+TEST(Tabs, BetweenTwoPiecesTheTabGoesIntoABayRatherThanOutPastTheOtherPiece) {
+  const UAndSquare s = u_and_square();
+  const TabPlan plan = plan_tabs(s.pieces, s.seams, TabOptions{});
+  ASSERT_TRUE(plan.tab_of_seam[0].has_value());
+  EXPECT_EQ(plan.tab_of_seam[0]->piece, 0) << "the tab on the U's bay floor";
+  // The tab stays inside the bay, clear of the U's arms.
+  for (Vec2 corner : plan.tab_of_seam[0]->quad_mm) {
+    EXPECT_GE(corner.x, 10 - 1e-9);
+    EXPECT_LE(corner.x, 20 + 1e-9);
+    EXPECT_GE(corner.y, 10 - 1e-9);
+  }
+  TabOptions alternate_only;
+  alternate_only.into_bays = false;
+  const TabPlan alternated = plan_tabs(s.pieces, s.seams, alternate_only);
+  ASSERT_TRUE(alternated.tab_of_seam[0].has_value());
+  EXPECT_EQ(alternated.tab_of_seam[0]->piece, 1) << "without the rule the first side, out past the square";
+}
+
 TEST(Tabs, TheWidthsTriedNarrowFromTheEdgesShareDownToTheLeast) {
   const TabOptions o;
   const std::vector<double> on_long = tab_widths_to_try(100, o);

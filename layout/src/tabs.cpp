@@ -37,6 +37,8 @@ constexpr std::array<double, 7> kStretchShares{0.75, 0.6, 0.45, 0.33, 0.25, 0.18
 constexpr std::array<double, 5> kStretchStarts{1.0, 0.0, 0.5, 0.25, 0.75};
 // A stretch shorter than this many least widths is not worth a tab.
 constexpr double kShortestStretchInWidths = 1.5;
+// Where along a full tab's outer side it is tested for lying in a bay of its piece (edge parameters).
+constexpr std::array<double, 3> kBayProbes{0.25, 0.5, 0.75};
 // A tab covering this share of its edge covers the whole edge (rounding of the stretch ends).
 constexpr double kWholeEdgeShare = 0.999;
 // The partner side's tab replaces a partial tab on the preferred side only when it is this many times
@@ -135,7 +137,9 @@ class TabPlanner {
     plan_.second_half_of_seam.resize(seams.size());
     settled_.assign(seams.size(), 0);
     state_.reserve(pieces.size());
+    hulls_.reserve(pieces.size());
     for (std::size_t p = 0; p < pieces.size(); ++p) {
+      hulls_.push_back(hull_of(pieces[p]));
       state_.emplace_back(pieces[p], options.width_mm);
       for (const OutlineLoop& loop : pieces[p].outline_mm)
         seam_at_[p].emplace_back(loop.size(), -1);
@@ -193,12 +197,42 @@ class TabPlanner {
   }
 
  private:
-  // Alternate: prefer the side whose outline neighbours carry no tab yet, so a zipper of neighbouring
-  // seams gets tab, no tab, tab… and every flap has a plain edge to be glued under.
-  // A side the caller wants (its label fits on the tab, not on its face) comes first.
+  // A side the caller wants (its label fits on the tab, not on its face) comes first. Between two
+  // pieces, then, the side whose tab lies in a bay of its piece: a tab out past the piece's convex hull
+  // is a spike other pieces must keep their distance from, one in a bay adds nothing to the hull
+  // (`bench --layout`: fewer parts and sheets; docs/layout.md). Else alternate: prefer the side whose
+  // outline neighbours carry no tab yet, so a zipper of neighbouring seams gets tab, no tab, tab… and
+  // every flap has a plain edge to be glued under.
   int preferred_side(int index, const Seam& seam) const {
     if (const int wanted = wanted_side(index); wanted >= 0) return wanted;
+    if (o_.into_bays && seam.sides[0].piece >= 0 && seam.sides[1].piece >= 0 &&
+        seam.sides[0].piece != seam.sides[1].piece) {
+      const int in0 = probes_in_hull(seam.sides[0]), in1 = probes_in_hull(seam.sides[1]);
+      if (in0 != in1) return in1 > in0 ? 1 : 0;
+    }
     return neighbours_with_tabs(seam.sides[1]) < neighbours_with_tabs(seam.sides[0]) ? 1 : 0;
+  }
+
+  // How many points along the outer side of a full tab on `side` lie inside its piece's convex hull.
+  int probes_in_hull(const SeamSide& side) const {
+    const OutlineEdge& e = edge_of(pieces_, side);
+    const Vec2 along = e.b - e.a;
+    const double length = norm(along);
+    if (!(length > 0)) return 0;
+    const double width = std::min(o_.width_mm, o_.width_per_length * length);
+    // The piece lies left of its outline edges, so its tabs lie to the right.
+    const Vec2 out = Vec2{along.y, -along.x} * (width / length);
+    return static_cast<int>(std::count_if(kBayProbes.begin(), kBayProbes.end(), [&](double t) {
+      return inside_convex(hulls_[side.piece], e.a + along * t + out, 0);
+    }));
+  }
+
+  static std::vector<Vec2> hull_of(const ScaledPiece& piece) {
+    std::vector<Vec2> corners;
+    for (const OutlineLoop& loop : piece.outline_mm)
+      for (const OutlineEdge& e : loop)
+        corners.push_back(e.a);
+    return convex_hull(std::move(corners));
   }
 
   // The side the caller wants for seam `index`, or -1 (also where it wants the tab split).
@@ -460,6 +494,7 @@ class TabPlanner {
   const TabOptions& o_;
   std::span<const int> wanted_sides_;  // per seam: the side to try first, or -1
   std::vector<PieceState> state_;
+  std::vector<std::vector<Vec2>> hulls_;                // per piece: its outline's convex hull
   std::vector<std::vector<std::vector<int>>> seam_at_;  // per piece, loop, outline index: its seam or -1
   std::vector<char> settled_;                           // per seam: tab placed or dropped
   TabPlan plan_;

@@ -1,11 +1,12 @@
 #pragma once
 // Glue tabs: one trapezoid per seam pair, on one side only (or, asked for, split in two halves, one on
-// each side along opposite halves of the edge). Each tab's slanted ends take at most half
-// of the free angle at its corners, so it keeps clear of the neighbouring edges and of a neighbour's
-// tab even at sharp reflex corners; short edges get narrower tabs. A tab that would overlap its own
-// piece or one of the piece's tabs is narrowed, then moved to the partner edge, and dropped only when
-// neither side has room even at the minimum width. Other pieces are kept apart by packing, which
-// treats a piece and its tabs as one shape.
+// each side along opposite halves of the edge). Between two pieces the side in a bay of its piece is
+// preferred (packing nests the pieces closer); otherwise sides alternate along the outlines. Each tab's
+// slanted ends take at most half of the free angle at its corners, so it keeps clear of the neighbouring
+// edges and of a neighbour's tab even at sharp reflex corners; short edges get narrower tabs. A tab that
+// would overlap its own piece or one of the piece's tabs is narrowed, then moved to the partner edge, and
+// dropped only when neither side has room even at the minimum width. Other pieces are kept apart by packing,
+// which treats a piece and its tabs as one shape.
 #include <numbers>
 #include <optional>
 #include <span>
@@ -31,6 +32,9 @@ struct TabOptions {
   /// A tab wanted for its label (plan_tabs' wanted_sides) is first tried at least this wide (never
   /// above width_mm), where its edge's length alone would make it too narrow for the label; 0: no floor.
   double label_width_mm = 0;
+  /// A seam between two pieces gets its tab on the side that lies in a bay of its piece (inside the
+  /// piece's convex hull) where the other side's would stick out past it; off: sides alternate only.
+  bool into_bays = true;
 };
 
 /// A placed tab, in its piece's frame (mm, y up).
