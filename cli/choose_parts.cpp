@@ -656,6 +656,9 @@ ChosenParts choose_parts_once(const unfold::Mesh& mesh, const unfold::Unfolding&
   // Nor do they search for sheets to empty once packed: plane_2000 at 250 mm took 3.1 s with it, 2.4 s
   // without, for the same 3 sheets.
   if (large) o.pack.sheet_search_orders = 0;
+  // Nor do their tabs go into bays: spot_2000 at 150 mm took 4.3 s with them, 1.8 s without, for the
+  // same 3 sheets and 18 parts.
+  if (large) o.tab.into_bays = false;
   // Labels look for leader spots thoroughly on meshes up to kMostFacesForThoroughLabels, where it pays
   // (350-500 faces at 150 mm: 417 -> 345 labels unclear). Above, most labels of a crowded layout find
   // no spot either way and every one tried costs: torus_2000 at 150 mm laid out in 2.5 s instead of 1.5,
