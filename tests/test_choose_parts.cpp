@@ -303,8 +303,8 @@ TEST(ChooseParts, TheBoundCountsFacesThatCannotShareASheetAndTheChoiceReachesIt)
 }
 
 TEST(ChooseParts, WhereTabsInBaysLeaveTheLayoutSheetsAboveItsBoundThePartsAreChosenAgainWithAlternatingTabs) {
-  // The football's hexagons at 250 mm: with its tabs in the notches between faces, where neighbours'
-  // corners nest otherwise, every partition took 7 sheets; with alternating tabs one takes 6.
+  // The football's hexagons at 250 mm: with tabs in bays every candidate partition took 7 sheets by its
+  // estimate; with alternating tabs one takes 6.
   const LowPoly ball = unfolded_low_poly("football.obj");
   layout::LayoutOptions planned;
   planned.size_mm = 250;

@@ -716,7 +716,7 @@ TEST(Layout, ProgressGoesThroughEveryStageWithCountsThatRiseToTheirTotals) {
 TEST(Layout, ALongSeamWhoseOneTabHoldsOneLabelWhileTheOtherHasNoRoomGetsItsTabSplitInTwo) {
   const auto& ex = test::unfolded_example("penguin_500.obj");
   LayoutOptions o = on_a1_at_size(100);  // small: many faces too narrow for a label beside their long edges
-  o.tab.into_bays = false;  // the case was found with alternating tabs; tabs in bays hold these labels
+  o.tab.into_bays = false;               // the case was found with alternating tabs; its point is the split
   const LayoutResult with = layout_sheets(ex.unfolding, o);
   o.split_tabs_for_labels = false;
   const LayoutResult without = layout_sheets(ex.unfolding, o);
