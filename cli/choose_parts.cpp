@@ -313,6 +313,9 @@ int flaws(const layout::LayoutResult& r) {
 
 namespace {
 
+// The fractions of the room patches are grown into, in the order tried.
+constexpr double kPatchFractions[] = {1.0, 0.5, 0.7, 0.35};
+
 // Parts as large as the sheet allows give the fewest seams but, cut from a spindly net, pack poorly;
 // smaller, rounder parts often save a sheet. Packing is a heuristic, so each split is judged by packing
 // it (the estimate). Large meshes try the first three only, so their layout stays fast; a count, not a
@@ -334,6 +337,7 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long s
   // faces) 466 -> 448 sheets, 18 runs a sheet fewer, none more, the same CPU (the bound is reached
   // sooner); 466 -> 459 with the labels' veto (keep_patches_only_if_legible), and 2,758 -> 2,621 parts
   // where patches tie on sheets with fewer parts. Large meshes stop before them.
+  // clang-format off
   constexpr Try tries[] = {{1.0, unfold::PartGrowth::Round, 0},
                            {0.7, unfold::PartGrowth::Tree, 0},
                            {0.5, unfold::PartGrowth::Tree, 0},
@@ -343,10 +347,11 @@ void try_partitions(PartChooser& chooser, const layout::LayoutOptions& o, long s
                            {0.35, unfold::PartGrowth::Tree, 0},
                            {1.0, unfold::PartGrowth::Round, 2},
                            {1.0, unfold::PartGrowth::Tree, 2},
-                           {1.0, {}, 0, true},
-                           {0.5, {}, 0, true},
-                           {0.7, {}, 0, true},
-                           {0.35, {}, 0, true}};
+                           {kPatchFractions[0], {}, 0, true},
+                           {kPatchFractions[1], {}, 0, true},
+                           {kPatchFractions[2], {}, 0, true},
+                           {kPatchFractions[3], {}, 0, true}};
+  // clang-format on
   const std::size_t trials = large ? 3 : std::size(tries);
   auto best_estimate = [&] {
     return std::min_element(candidates.begin(), candidates.end(),
@@ -400,21 +405,90 @@ Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate>& candida
 // `bench/label_sweep.py` they left 1,115 labels of 17,848 unclear against 889 of 17,678. A sheet is
 // worth a few more unclear labels, not many: patches are kept when their labels crossing lines or
 // touching are at most kLegibleLabelShare of their labels (legible as issue 12 counts it), or at most
-// kPatchLabelShare of them more than the best partition cut from the net leaves (laid out here if it
-// was not).
-void keep_patches_only_if_legible(PartChooser& chooser, std::vector<Candidate>& others, Candidate& best) {
-  constexpr double kLegibleLabelShare = 0.02;  // issue 12's bar
-  constexpr double kPatchLabelShare = 0.01;
+// kPatchLabelShare of them more than the best partition cut from the net leaves.
+constexpr double kLegibleLabelShare = 0.02;  // issue 12's bar
+constexpr double kPatchLabelShare = 0.01;
+
+// How many more labels the laid-out `patches` leave unclear than they may (negative: fewer).
+int unclear_over_allowed(const Candidate& patches, int net_unclear) {
+  const int labels = patches.layout->label_audit.labels;
+  const int allowed = std::max(static_cast<int>(std::floor(kLegibleLabelShare * labels)),
+                               net_unclear + static_cast<int>(std::floor(kPatchLabelShare * labels)));
+  return patches.layout->label_audit.unclear() - allowed;
+}
+
+bool legible_enough(const Candidate& patches, int net_unclear) {
+  return unclear_over_allowed(patches, net_unclear) <= 0;
+}
+
+// The patches at the fractions the trials did not reach (they stop at the bound), estimated.
+std::vector<Candidate> patches_not_tried(PartChooser& chooser, const std::vector<Candidate>& tried) {
+  std::vector<Candidate> made;
+  for (double fraction : kPatchFractions) {
+    std::optional<Candidate> c = chooser.patches(fraction);
+    if (!c) continue;
+    const auto same = [&](const Candidate& seen) {
+      return same_parts(seen.parts.unfolding, c->parts.unfolding);
+    };
+    if (std::any_of(tried.begin(), tried.end(), same) || std::any_of(made.begin(), made.end(), same))
+      continue;
+    chooser.estimate(*c);
+    made.push_back(std::move(*c));
+  }
+  return made;
+}
+
+// Where the patches laid out just miss the bar, patches grown into other fractions of the room may
+// clear it on as many sheets: their seams between parts fall elsewhere (cat_500 at 150 mm: patches into
+// the whole room left 11 of 538 labels unclear where 10 may be, into 0.7 of it 9 of 542, both on one
+// sheet where the net's parts take two). The estimates on as few sheets as `others[vetoed]` are laid
+// out, fewest sheets and parts first, at most kOtherPatchLayouts of them; the first legible enough
+// replaces `best` (the net's best). Returns whether one did.
+bool other_patches_legible(PartChooser& chooser, const layout::LayoutOptions& o,
+                           std::vector<Candidate>& others, std::size_t vetoed, int net_unclear,
+                           Candidate& best) {
+  constexpr std::size_t kOtherPatchLayouts = 3;
+  const long patch_sheets = others[vetoed].sheets;
+  std::vector<Candidate> made = patches_not_tried(chooser, others);
+  std::move(made.begin(), made.end(), std::back_inserter(others));
+  std::vector<Candidate*> tries;
+  for (std::size_t i = 0; i < others.size(); ++i)
+    if (i != vetoed && others[i].patches && others[i].sheets <= patch_sheets) tries.push_back(&others[i]);
+  std::stable_sort(tries.begin(), tries.end(),
+                   [](const Candidate* a, const Candidate* b) { return a->rank() < b->rank(); });
+  if (tries.size() > kOtherPatchLayouts) tries.resize(kOtherPatchLayouts);
+  for (Candidate* c : tries) {
+    if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return false;
+    if (!c->layout) chooser.lay_out(*c);
+    if (c->sheets < best.sheets && legible_enough(*c, net_unclear)) {
+      std::swap(best, *c);
+      return true;
+    }
+  }
+  return false;
+}
+
+// The veto (above). Other patches are tried only where the first miss the bar by at most
+// kPatchLabelShare of their labels: a larger miss was never made up over `bench --layout` (fish_500 at
+// 150 mm: 56 of 552 unclear, the other fractions 20-63, 11 allowed; homer_1000: 741 of 1,076, the
+// others 708-849, 673 allowed), and trying cost homer_1000 at 150 mm 6 s.
+void keep_patches_only_if_legible(PartChooser& chooser, const layout::LayoutOptions& o,
+                                  std::vector<Candidate>& others, Candidate& best) {
   if (!best.patches || !best.layout) return;
-  const int labels = best.layout->label_audit.labels;
-  if (best.layout->label_audit.unclear() <= static_cast<int>(std::floor(kLegibleLabelShare * labels))) return;
+  if (legible_enough(best, 0)) return;
   auto net = std::find_if(others.begin(), others.end(), [](const Candidate& c) { return !c.patches; });
   if (net == others.end()) return;  // ranked: the first cut from the net is its best
   if (!net->layout) chooser.lay_out(*net);
-  const int allowed =
-      net->layout->label_audit.unclear() + static_cast<int>(std::floor(kPatchLabelShare * labels));
-  if (best.layout->label_audit.unclear() <= allowed) return;
+  const int net_unclear = net->layout->label_audit.unclear();
+  const int miss = unclear_over_allowed(best, net_unclear);
+  if (miss <= 0) return;
+  const bool near_miss =
+      miss <= static_cast<int>(std::floor(kPatchLabelShare * best.layout->label_audit.labels));
   std::swap(best, *net);
+  const std::size_t vetoed = net - others.begin();
+  if (!near_miss || best.sheets <= others[vetoed].sheets) return;
+  if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
+  other_patches_legible(chooser, o, others, vetoed, net_unclear, best);
 }
 
 // Partitions often tie on sheets and parts yet differ in seams without a glue tab: a part boundary
@@ -691,7 +765,7 @@ ChosenParts choose_parts_once(const unfold::Mesh& mesh, const unfold::Unfolding&
   candidates.push_back(std::move(first));
   try_partitions(chooser, o, stop_at, large, choose.patches, trial_time, candidates);
   Candidate best = best_full_layout(chooser, candidates, large);
-  keep_patches_only_if_legible(chooser, candidates, best);
+  keep_patches_only_if_legible(chooser, o, candidates, best);
   if (!large) {
     resplit_last_sheet(mesh, o, chooser.part_options(), bound, chooser, best);
     fewer_seams_without_tab(chooser, candidates, best);

@@ -6,9 +6,12 @@
 #include <string>
 
 #include "choose_parts.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/parts.hpp"
 #include "foldkit/unfold/slit_cuts.hpp"
 #include "layout_fixtures.hpp"
+#include "print_cuts.hpp"
+#include "test_paths.hpp"
 
 using namespace foldkit;
 
@@ -385,4 +388,36 @@ TEST(ChooseParts, PatchesThatLeaveManyLabelsUnclearAreNotWorthTheSheetTheySave) 
   EXPECT_FALSE(chosen.patches);
   EXPECT_LT(labels_unclear(*chosen.layout) + 0.01 * chosen.layout->label_audit.labels,
             labels_unclear(*dense));
+}
+
+TEST(ChooseParts, WherePatchesIntoTheWholeRoomLeaveTooManyLabelsUnclearPatchesIntoLessOfItCanKeepTheSheet) {
+  // The cat at 150 mm, unfolded as `make` unfolds it: the net's parts take two sheets. Patches grown into
+  // the whole room fit one, but leave more than 2% of their labels unclear; patches grown into less of
+  // the room fit one too, their seams between parts elsewhere, and their labels legible.
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  const unfold::Mesh mesh = unfold::load_mesh(test::example_mesh("cat_500.obj")).mesh;
+  unfold::UnfoldOptions uo;
+  uo.threads = 1;
+  uo.cuts = cli::cuts_for_print(mesh, o, uo.cuts);
+  const unfold::Unfolding u = unfold::unfold_mesh(mesh, uo).unfolding;
+  const unfold::PartOptions parts = cli::part_options_of(mesh, uo);
+  cli::ChooseOptions net_only;
+  net_only.patches = false;
+  const cli::ChosenParts cut = cli::choose_parts(mesh, u, o, parts, net_only);
+  unfold::PartOptions whole_room = parts;
+  whole_room.room_mm = layout::piece_room_mm(o);
+  whole_room.mm_per_unit = *o.size_mm / u.model_extent;
+  const std::optional<unfold::Unfolding> first = unfold::patch_parts(mesh, u, whole_room);
+  ASSERT_TRUE(first.has_value());
+  const layout::LayoutResult first_laid = layout::layout_sheets(*first, o);
+  const cli::ChosenParts chosen = cli::choose_parts(mesh, u, o, parts);
+  ASSERT_TRUE(cut.layout && chosen.layout);
+  EXPECT_EQ(sheets_with_pieces(*cut.layout), 2);
+  EXPECT_EQ(sheets_with_pieces(first_laid), 1);
+  EXPECT_GT(labels_unclear(first_laid), 0.02 * first_laid.label_audit.labels);
+  EXPECT_TRUE(chosen.patches);
+  EXPECT_EQ(sheets_with_pieces(*chosen.layout), 1);
+  EXPECT_LE(labels_unclear(*chosen.layout), 0.02 * chosen.layout->label_audit.labels);
+  EXPECT_EQ(unfold::check_unfolding(mesh, chosen.unfolding), std::vector<std::string>{});
 }
