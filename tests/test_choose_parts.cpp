@@ -390,18 +390,33 @@ TEST(ChooseParts, PatchesThatLeaveManyLabelsUnclearAreNotWorthTheSheetTheySave) 
             labels_unclear(*dense));
 }
 
+namespace {
+// A mesh of examples/ unfolded as `make` unfolds it at the size of `o` (cuts_for_print), one thread.
+struct ForPrint {
+  unfold::Mesh mesh;
+  unfold::UnfoldOptions options;
+  unfold::Unfolding unfolding;
+};
+
+ForPrint unfolded_for_print(const std::string& name, const layout::LayoutOptions& o) {
+  ForPrint run{unfold::load_mesh(test::example_mesh(name)).mesh, {}, {}};
+  run.options.threads = 1;
+  run.options.cuts = cli::cuts_for_print(run.mesh, o, run.options.cuts);
+  run.unfolding = unfold::unfold_mesh(run.mesh, run.options).unfolding;
+  return run;
+}
+}  // namespace
+
 TEST(ChooseParts, WherePatchesIntoTheWholeRoomLeaveTooManyLabelsUnclearPatchesIntoLessOfItCanKeepTheSheet) {
   // The cat at 150 mm, unfolded as `make` unfolds it: the net's parts take two sheets. Patches grown into
   // the whole room fit one, but leave more than 2% of their labels unclear; patches grown into less of
   // the room fit one too, their seams between parts elsewhere, and their labels legible.
   layout::LayoutOptions o;
   o.size_mm = 150;
-  const unfold::Mesh mesh = unfold::load_mesh(test::example_mesh("cat_500.obj")).mesh;
-  unfold::UnfoldOptions uo;
-  uo.threads = 1;
-  uo.cuts = cli::cuts_for_print(mesh, o, uo.cuts);
-  const unfold::Unfolding u = unfold::unfold_mesh(mesh, uo).unfolding;
-  const unfold::PartOptions parts = cli::part_options_of(mesh, uo);
+  const ForPrint run = unfolded_for_print("cat_500.obj", o);
+  const unfold::Mesh& mesh = run.mesh;
+  const unfold::Unfolding& u = run.unfolding;
+  const unfold::PartOptions parts = cli::part_options_of(mesh, run.options);
   cli::ChooseOptions net_only;
   net_only.patches = false;
   const cli::ChosenParts cut = cli::choose_parts(mesh, u, o, parts, net_only);
@@ -420,4 +435,27 @@ TEST(ChooseParts, WherePatchesIntoTheWholeRoomLeaveTooManyLabelsUnclearPatchesIn
   EXPECT_EQ(sheets_with_pieces(*chosen.layout), 1);
   EXPECT_LE(labels_unclear(*chosen.layout), 0.02 * chosen.layout->label_audit.labels);
   EXPECT_EQ(unfold::check_unfolding(mesh, chosen.unfolding), std::vector<std::string>{});
+}
+
+TEST(ChooseParts, PatchesThatJustMissTheLabelsBarAreJudgedAgainOnceJoinedOnTheirSheet) {
+  // The wing nut at 150 mm: the net's parts take two sheets. Patches fit one, with a few labels more
+  // unclear than 2%; joined where they share the sheet they have fewer seams to label, and pass.
+  layout::LayoutOptions o;
+  o.size_mm = 150;
+  const ForPrint run = unfolded_for_print("wingnut_350.obj", o);
+  const unfold::PartOptions parts = cli::part_options_of(run.mesh, run.options);
+  cli::ChooseOptions net_only;
+  net_only.patches = false;
+  cli::ChooseOptions not_joined;
+  not_joined.join_on_a_sheet = false;
+  const cli::ChosenParts cut = cli::choose_parts(run.mesh, run.unfolding, o, parts, net_only);
+  const cli::ChosenParts unjoined = cli::choose_parts(run.mesh, run.unfolding, o, parts, not_joined);
+  const cli::ChosenParts chosen = cli::choose_parts(run.mesh, run.unfolding, o, parts);
+  ASSERT_TRUE(cut.layout && unjoined.layout && chosen.layout);
+  EXPECT_EQ(sheets_with_pieces(*cut.layout), 2);
+  EXPECT_EQ(sheets_with_pieces(*unjoined.layout), 2);  // the patches alone do not pass
+  EXPECT_TRUE(chosen.patches);
+  EXPECT_EQ(sheets_with_pieces(*chosen.layout), 1);
+  EXPECT_LE(labels_unclear(*chosen.layout), 0.02 * chosen.layout->label_audit.labels);
+  EXPECT_EQ(unfold::check_unfolding(run.mesh, chosen.unfolding), std::vector<std::string>{});
 }
