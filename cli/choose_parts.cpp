@@ -474,10 +474,9 @@ bool other_patches_legible(PartChooser& chooser, const layout::LayoutOptions& o,
 // the re-split, seam and slit steps and the joins on a sheet that every choice gets) and judged again:
 // parts joined on their sheet have fewer seams to label (wingnut_350 at 150 mm: 9 of 394 labels
 // unclear where 7 may be, 6 of 386 once 22 patches are joined into 18). A larger miss was never made
-// up over `bench --layout`
-// (fish_500 at 150 mm: 56 of 552 unclear, the other fractions 20-63, 11 allowed; homer_1000: 741 of
-// 1,076, the others 708-849, 673 allowed), and trying cost homer_1000 at 150 mm 6 s. Returns whether
-// `best` is finished.
+// up over `bench --layout` (fish_500 at 150 mm: 56 of 552 unclear, the other fractions 20-63,
+// finished 51, 11 allowed; homer_1000: 741 of 1,076, the others 708-849, 673 allowed), and trying
+// cost homer_1000 at 150 mm 6 s. Returns whether `best` is finished.
 bool keep_patches_only_if_legible(PartChooser& chooser, const layout::LayoutOptions& o,
                                   std::vector<Candidate>& others, Candidate& best,
                                   const std::function<void(Candidate&)>& finish) {
