@@ -221,7 +221,7 @@ class TabPlanner {
     if (!(length > 0)) return 0;
     const double width = std::min(o_.width_mm, o_.width_per_length * length);
     // The piece lies left of its outline edges, so its tabs lie to the right.
-    const Vec2 out = Vec2{along.y, -along.x} * (width / length);
+    const Vec2 out = perp_ccw(along) * (-width / length);
     return static_cast<int>(std::count_if(kBayProbes.begin(), kBayProbes.end(), [&](double t) {
       return inside_convex(hulls_[side.piece], e.a + along * t + out, 0);
     }));
