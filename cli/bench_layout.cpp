@@ -19,6 +19,7 @@
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
 #include "json_report.hpp"
+#include "layout_options.hpp"
 #include "median.hpp"
 #include "pipeline.hpp"
 #include "print_cuts.hpp"
@@ -66,7 +67,9 @@ Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
     row.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   };
   try {
-    std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(run, o);
+    const ChooseOptions choose =
+        bleed_room(choose_options_of(LayoutCliOptions{}), run.loaded.mesh, layout::FillOptions{});
+    std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(run, o, choose);
     const unfold::Unfolding& chosen = run.result.unfolding;
     const layout::LayoutResult r = laid_out ? std::move(*laid_out) : layout::layout_sheets(chosen, o);
     stop();

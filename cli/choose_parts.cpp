@@ -17,6 +17,7 @@
 #include "foldkit/unfold/seams.hpp"
 #include "foldkit/unfold/slit_cuts.hpp"
 #include "foldkit/unfold/slits.hpp"
+#include "length_option.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -794,17 +795,14 @@ ChosenParts choose_parts_once(const unfold::Mesh& mesh, const unfold::Unfolding&
           best.parts.unfolding.piece_count - untouched, std::move(best.layout)};
 }
 
-}  // namespace
-
-ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
-                         const layout::LayoutOptions& asked, const unfold::PartOptions& parts,
-                         const ChooseOptions& choose) {
-  long least = 0;
-  ChosenParts chosen = choose_parts_once(mesh, u, asked, parts, choose, least);
-  // Tabs tucked into bays pack most nets closer (layout::TabOptions::into_bays), not every one:
-  // lowpoly/football at 250 mm took 7 sheets with them (every candidate's estimate 7), 6 without. Where
-  // the layout stays more than a sheet above what any partition needs, the parts are chosen again with
-  // alternating tabs.
+// Tabs tucked into bays pack most nets closer (layout::TabOptions::into_bays), not every one:
+// lowpoly/football at 250 mm took 7 sheets with them (every candidate's estimate 7), 6 without. Where
+// the layout stays more than a sheet above what any partition needs (`least`), the parts are chosen
+// again with alternating tabs.
+ChosenParts with_alternating_tabs_if_fewer(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                                           const layout::LayoutOptions& asked,
+                                           const unfold::PartOptions& parts, const ChooseOptions& choose,
+                                           long least, ChosenParts chosen) {
   const auto over = [least](const ChosenParts& c) {
     return c.layout ? static_cast<long>(c.layout->sheets.size()) - least : 0;
   };
@@ -820,6 +818,68 @@ ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
     // out of time: the choice made stands
   }
   return chosen;
+}
+
+// Whether `closer` is legible enough to take the place of `held` for the sheet it saves: at most
+// kPatchLabelShare of its labels more flaws, and no more than issue 12's kLegibleLabelShare unless
+// `held` had as many. rocker_arm_350 at 150 mm fits one sheet at 1 mm with 6 of 390 labels unclear
+// (1.5%) where its two sheets had none: under 2% alone, but it took the label sweep's total over it.
+bool as_legible_as(const layout::LayoutResult& closer, const layout::LayoutResult& held) {
+  const double labels = closer.label_audit.labels;
+  const int more = static_cast<int>(std::floor(kPatchLabelShare * labels));
+  const int legible = static_cast<int>(std::floor(kLegibleLabelShare * labels));
+  return cli::flaws(closer) <= std::max(cli::flaws(held), std::min(legible, cli::flaws(held) + more));
+}
+
+// Whether a layout of `sheets` sheets whose parts cover `coverage` of them would fill one sheet fewer
+// to at most kCloserSpacingReach.
+bool sheet_fewer_in_reach(std::size_t sheets, double coverage) {
+  return sheets > 1 && coverage * sheets / (sheets - 1) <= kCloserSpacingReach;
+}
+
+// The gaps between parts are what ragged nets lose most paper to: half of them takes bumpy_528 at
+// 250 mm from 7 sheets to 6 and bunny_1000 from 6 to 5. A gap is the builder's room to cut one part
+// without nicking the next, so it closes only where that saves a sheet, and only where no colour
+// bleeds into it (ChooseOptions::closer_spacing_mm is then unset or no closer).
+ChosenParts closer_if_a_sheet_fewer(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                                    const layout::LayoutOptions& asked, const unfold::PartOptions& parts,
+                                    const ChooseOptions& choose, long least, ChosenParts chosen) {
+  if (!choose.closer_spacing_mm || !(*choose.closer_spacing_mm < asked.pack.spacing_mm)) return chosen;
+  if (!chosen.layout || least <= 0 || mesh.num_faces() > kManyFaces) return chosen;
+  const layout::LayoutResult& held = *chosen.layout;
+  if (static_cast<long>(held.sheets.size()) <= least ||
+      !sheet_fewer_in_reach(held.sheets.size(), held.overall.coverage))
+    return chosen;
+  if (asked.deadline && std::chrono::steady_clock::now() > *asked.deadline) return chosen;
+  layout::LayoutOptions closer = asked;
+  closer.pack.spacing_mm = *choose.closer_spacing_mm;
+  try {
+    long unused = 0;
+    ChosenParts other = with_alternating_tabs_if_fewer(
+        mesh, u, closer, parts, choose, least, choose_parts_once(mesh, u, closer, parts, choose, unused));
+    if (!other.layout || other.layout->sheets.size() >= held.sheets.size()) return chosen;
+    if (!as_legible_as(*other.layout, held)) return chosen;
+    other.layout->notes.push_back("pieces packed " + format_length_mm(closer.pack.spacing_mm) +
+                                  " apart, not " + format_length_mm(asked.pack.spacing_mm) +
+                                  ", which saves a sheet (" + std::to_string(other.layout->sheets.size()) +
+                                  " instead of " + std::to_string(held.sheets.size()) +
+                                  "); --spacing keeps the gap asked");
+    return other;
+  } catch (const LayoutError&) {
+    // out of time: the choice made stands
+  }
+  return chosen;
+}
+
+}  // namespace
+
+ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
+                         const layout::LayoutOptions& asked, const unfold::PartOptions& parts,
+                         const ChooseOptions& choose) {
+  long least = 0;
+  ChosenParts chosen = choose_parts_once(mesh, u, asked, parts, choose, least);
+  chosen = with_alternating_tabs_if_fewer(mesh, u, asked, parts, choose, least, std::move(chosen));
+  return closer_if_a_sheet_fewer(mesh, u, asked, parts, choose, least, std::move(chosen));
 }
 
 }  // namespace foldkit::cli

@@ -442,8 +442,8 @@ void run_cut(CutArgs args) {
   ProgressLine line(!args.quiet && !args.json);
   // The colour options move pieces (the bleed widens their spacing): taken so that a cut matches the
   // coloured sheet `make` printed with the same options.
-  const PipelineRun run =
-      load_unfold_layout(args.mesh, args.unfold, layout_options, line, to_fill_options(args.colour));
+  const PipelineRun run = load_unfold_layout(args.mesh, args.unfold, layout_options, line,
+                                             to_fill_options(args.colour), choose_options_of(args.layout));
   const std::vector<Sheet>& sheets = run.layout.sheets;
   if (args.sheet > static_cast<int>(sheets.size()))
     throw Error("--sheet " + std::to_string(args.sheet) + ": the layout has " +

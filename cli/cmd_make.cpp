@@ -285,6 +285,7 @@ nlohmann::json make_json(const MakeArgs& args, const PipelineRun& run,
                    {"size_mm", r.size_mm},
                    {"scale_mm_per_unit", r.scale_mm_per_unit},
                    {"paper_mm", {layout_options.paper_mm.x, layout_options.paper_mm.y}},
+                   {"spacing_mm", r.spacing_mm},
                    {"sheet_count", r.sheets.size()},
                    {"sheets", sheets},
                    {"overall", stats_json(r.overall)},
@@ -343,8 +344,8 @@ void run_make(MakeArgs args) {
   if (format == "dxf" || !args.bundle.empty()) font = load_label_font();
   const devices::StrokeFont* label_font = font ? &*font : nullptr;
   ProgressLine line(!args.quiet);
-  const PipelineRun run =
-      load_unfold_layout(args.mesh, args.unfold, layout_options, line, to_fill_options(args.colour));
+  const PipelineRun run = load_unfold_layout(args.mesh, args.unfold, layout_options, line,
+                                             to_fill_options(args.colour), choose_options_of(args.layout));
   const layout::LayoutResult& r = run.layout;
   if (format != "pdf") {
     for (std::size_t i = 1; i < r.sheets.size(); ++i)

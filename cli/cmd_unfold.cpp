@@ -69,7 +69,9 @@ void run_unfold(UnfoldArgs args) {
                                   [&](const unfold::LoadedMesh& loaded, unfold::UnfoldOptions& o) {
                                     o.cuts = cuts_for_print(loaded.mesh, layout_options, o.cuts);
                                   });
-  choose_and_note_parts(run, layout_options);
+  // make's default colour options: a coloured model keeps the gap its bleed needs there too.
+  choose_and_note_parts(run, layout_options,
+                        bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));
   line.clear();
   const unfold::Unfolding& u = run.result.unfolding;
   if (!args.output.empty())

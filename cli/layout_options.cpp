@@ -32,7 +32,12 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& o) {
                     kRegMarkInset);
   add_length_option(cmd, "--regmark-square", o.regmark_square_mm, "Side of the square mark", kRegMarkSquare);
   add_length_option(cmd, "--regmark-arm", o.regmark_arm_mm, "Arm length of the L marks", kRegMarkArm);
-  add_length_option(cmd, "--spacing", o.spacing_mm, "Least gap between pieces", kSpacing);
+  add_length_option(
+      cmd, "--spacing", o.spacing_mm,
+      "Least gap between pieces; unless given, closed to 1 mm where that saves a sheet and no colour "
+      "bleeds into it",
+      kSpacing)
+      ->each([&o](const std::string&) { o.spacing_asked = true; });
   add_length_option(cmd, "--label-min", o.label_min_mm, "Smallest cap height of edge numbers", kLabelMin);
 }
 
@@ -58,6 +63,12 @@ layout::LayoutOptions to_layout_options(const LayoutCliOptions& o) {
   out.pack.spacing_mm = o.spacing_mm;
   out.label.min_mm = o.label_min_mm;
   return out;
+}
+
+ChooseOptions choose_options_of(const LayoutCliOptions& options) {
+  ChooseOptions choose;
+  if (!options.spacing_asked) choose.closer_spacing_mm = kCloserSpacing_mm;
+  return choose;
 }
 
 }  // namespace foldkit::cli

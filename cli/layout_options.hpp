@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "choose_parts.hpp"
 #include "foldkit/layout/layout.hpp"
 
 namespace foldkit::cli {
@@ -26,6 +27,7 @@ struct LayoutCliOptions {
   double regmark_square_mm = layout::RegMarkOptions{}.square_mm;
   double regmark_arm_mm = layout::RegMarkOptions{}.arm_mm;
   double spacing_mm = layout::PackOptions{}.spacing_mm;
+  bool spacing_asked = false;  ///< --spacing was given: the gap holds everywhere
   double label_min_mm = layout::LabelOptions{}.min_mm;
 };
 
@@ -36,5 +38,9 @@ void add_layout_options(CLI::App& cmd, LayoutCliOptions& options);
 
 /// The library options for the parsed command line.
 layout::LayoutOptions to_layout_options(const LayoutCliOptions& options);
+
+/// What the choice of parts may do with these options: close the gaps between parts to
+/// kCloserSpacing_mm where that saves a sheet, unless --spacing was given.
+ChooseOptions choose_options_of(const LayoutCliOptions& options);
 
 }  // namespace foldkit::cli

@@ -83,8 +83,9 @@ unfold::UnfoldOptions other_unfolding(unfold::UnfoldOptions options, const Other
 
 // The parts of an unfolding chosen and laid out, the layout made when the choice did not need one.
 ChosenParts choose_and_lay_out(const unfold::Mesh& mesh, const unfold::Unfolding& u,
-                               const layout::LayoutOptions& o, const unfold::UnfoldOptions& unfolded) {
-  ChosenParts parts = choose_parts(mesh, u, o, part_options_of(mesh, unfolded));
+                               const layout::LayoutOptions& o, const unfold::UnfoldOptions& unfolded,
+                               const ChooseOptions& choose) {
+  ChosenParts parts = choose_parts(mesh, u, o, part_options_of(mesh, unfolded), choose);
   if (!parts.layout) parts.layout = layout::layout_sheets(parts.unfolding, o);
   return parts;
 }
@@ -97,7 +98,8 @@ ChosenParts choose_and_lay_out(const unfold::Mesh& mesh, const unfold::Unfolding
 // Judged on labels alone the second unfolding traded 54 fewer unclear labels for 5 more seams without a
 // tab (882 -> 828, 208 -> 213 over the label sweep's meshes); judged by flaws, fewer of each
 // (docs/unfolding.md).
-void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, ChosenParts& parts) {
+void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, const ChooseOptions& choose,
+                          ChosenParts& parts) {
   const unfold::Mesh& mesh = run.loaded.mesh;
   if (!parts.layout) parts.layout = layout::layout_sheets(parts.unfolding, o);
   const auto rank = [](const layout::LayoutResult& r) { return std::pair(r.sheets.size(), flaws(r)); };
@@ -114,7 +116,7 @@ void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, Chosen
     const unfold::UnfoldOptions options = other_unfolding(asked, other, o);
     try {
       unfold::UnfoldResult result = unfold::unfold_mesh(mesh, options);
-      ChosenParts next = choose_and_lay_out(mesh, result.unfolding, again, options);
+      ChosenParts next = choose_and_lay_out(mesh, result.unfolding, again, options, choose);
       if (rank(*next.layout) >= rank(held)) continue;
       run.result = std::move(result);
       run.options = options;
@@ -128,20 +130,29 @@ void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, Chosen
 }  // namespace
 
 std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
-                                                          const layout::LayoutOptions& layout_options) {
+                                                          const layout::LayoutOptions& layout_options,
+                                                          const ChooseOptions& choose) {
   // One large piece (the unfolders' aim) may not fit the paper at the asked size: cut it into parts
   // that do, and say so, rather than refuse.
   ChosenParts parts = choose_parts(run.loaded.mesh, run.result.unfolding, layout_options,
-                                   part_options_of(run.loaded.mesh, run.options));
-  if (may_try_other_unfoldings(run, layout_options)) try_other_unfoldings(run, layout_options, parts);
+                                   part_options_of(run.loaded.mesh, run.options), choose);
+  if (may_try_other_unfoldings(run, layout_options)) try_other_unfoldings(run, layout_options, choose, parts);
   note_parts(run.result, parts);
   run.result.unfolding = std::move(parts.unfolding);
   return std::move(parts.layout);
 }
 
+ChooseOptions bleed_room(ChooseOptions choose, const unfold::Mesh& mesh,
+                         const std::optional<layout::FillOptions>& fills) {
+  if (choose.closer_spacing_mm && fills && layout::has_colour(mesh))
+    choose.closer_spacing_mm = std::max(*choose.closer_spacing_mm, layout::fill_spacing_mm(*fills));
+  return choose;
+}
+
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
-                               const std::optional<layout::FillOptions>& fills) {
+                               const std::optional<layout::FillOptions>& fills,
+                               const ChooseOptions& asked_choice) {
   const double limit_s = unfold_options.unfold.time_limit_s;
   const auto deadline =
       std::chrono::steady_clock::now() +
@@ -173,7 +184,8 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
   };
   const auto start = std::chrono::steady_clock::now();
   try {
-    auto laid_out = choose_and_note_parts(run.unfolded, layout_options);
+    auto laid_out = choose_and_note_parts(run.unfolded, layout_options,
+                                          bleed_room(asked_choice, run.unfolded.loaded.mesh, fills));
     run.layout = laid_out ? std::move(*laid_out)
                           : layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
   } catch (const LayoutError& e) {

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "choose_parts.hpp"
 #include "foldkit/layout/fills.hpp"
 #include "foldkit/layout/layout.hpp"
 #include "progress.hpp"
@@ -28,14 +29,21 @@ inline constexpr double kFewFlawsShare = 0.005;
 /// takes fewer sheets, or as many with fewer labels unclear and seams without a tab in all: run.result
 /// and run.options are then the second unfolding's. Returns the layout of those parts when the choice
 /// made one.
+/// `choose` says what the choice may do beyond picking parts (ChooseOptions; give it bleed_room first).
 std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
-                                                          const layout::LayoutOptions& layout_options);
+                                                          const layout::LayoutOptions& layout_options,
+                                                          const ChooseOptions& choose = {});
+/// `choose` with the gap its parts may close to kept wide enough for the colour `fills` bleed past the
+/// cut lines, where `mesh` prints in colour (nullopt: it prints white).
+ChooseOptions bleed_room(ChooseOptions choose, const unfold::Mesh& mesh,
+                         const std::optional<layout::FillOptions>& fills);
 
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
 /// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
 /// Throws InputError (mesh), LayoutError (does not fit) or Error.
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line,
-                               const std::optional<layout::FillOptions>& fills = std::nullopt);
+                               const std::optional<layout::FillOptions>& fills = std::nullopt,
+                               const ChooseOptions& choose = {});
 
 }  // namespace foldkit::cli

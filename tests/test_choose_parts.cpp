@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 
 #include "choose_parts.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
@@ -458,4 +460,81 @@ TEST(ChooseParts, PatchesThatJustMissTheLabelsBarAreJudgedAgainOnceJoinedOnTheir
   EXPECT_EQ(sheets_with_pieces(*chosen.layout), 1);
   EXPECT_LE(labels_unclear(*chosen.layout), 0.02 * chosen.layout->label_audit.labels);
   EXPECT_EQ(unfold::check_unfolding(run.mesh, chosen.unfolding), std::vector<std::string>{});
+}
+
+namespace {
+layout::Polygon ccw(layout::Polygon p) {
+  if (layout::signed_area(p) < 0) std::reverse(p.begin(), p.end());
+  return p;
+}
+
+// Whether every two parts on every sheet of `r`, with their tabs, keep at least `gap_mm` apart.
+bool parts_keep_apart(const layout::LayoutResult& r, double gap_mm) {
+  for (const Sheet& sheet : r.sheets) {
+    std::map<int, std::vector<layout::Polygon>> shape_of;
+    for (const Path& path : sheet.paths)
+      if ((path.role == PathRole::Cut || path.role == PathRole::Tab) && path.piece >= 0)
+        shape_of[path.piece].push_back(ccw(path.points_mm));
+    for (const auto& [a, shape_a] : shape_of) {
+      // A hair under the gap: the test's own offset is rounded.
+      const std::vector<layout::Polygon> near_a = layout::polygon_offset(shape_a, gap_mm - 0.05);
+      for (const auto& [b, shape_b] : shape_of)
+        if (b > a && layout::intersection_area(near_a, shape_b) > 1e-4) return false;
+    }
+  }
+  return true;
+}
+// The parts chosen for examples/<name> at `size_mm`, unfolded as `make` unfolds it: kept the default
+// 2 mm apart, and free to close to kCloserSpacing_mm.
+struct ApartAndCloser {
+  ForPrint run;
+  cli::ChosenParts apart, closer;
+};
+
+ApartAndCloser chosen_apart_and_closer(const std::string& name, double size_mm) {
+  layout::LayoutOptions o;
+  o.size_mm = size_mm;
+  ForPrint run = unfolded_for_print(name, o);
+  const unfold::PartOptions parts = cli::part_options_of(run.mesh, run.options);
+  cli::ChooseOptions closer;
+  closer.closer_spacing_mm = cli::kCloserSpacing_mm;
+  cli::ChosenParts apart = cli::choose_parts(run.mesh, run.unfolding, o, parts);
+  cli::ChosenParts chosen = cli::choose_parts(run.mesh, run.unfolding, o, parts, closer);
+  return {std::move(run), std::move(apart), std::move(chosen)};
+}
+}  // namespace
+
+TEST(ChooseParts, WhereHalfTheGapBetweenPartsSavesASheetThePartsCloseToIt) {
+  // The penguin at 250 mm: its parts 2 mm apart take four sheets, and three would need them 68.9% full.
+  // 1 mm apart they fit three, with their labels as legible.
+  const ApartAndCloser c = chosen_apart_and_closer("penguin_500.obj", 250);
+  ASSERT_TRUE(c.apart.layout && c.closer.layout);
+  const layout::LayoutResult& apart = *c.apart.layout;
+  const layout::LayoutResult& closer = *c.closer.layout;
+  EXPECT_EQ(apart.sheets.size(), 4u);
+  EXPECT_EQ(apart.spacing_mm, 2);
+  EXPECT_TRUE(parts_keep_apart(apart, 2));
+  EXPECT_EQ(closer.sheets.size(), 3u);
+  EXPECT_EQ(closer.spacing_mm, cli::kCloserSpacing_mm);
+  EXPECT_TRUE(parts_keep_apart(closer, cli::kCloserSpacing_mm));
+  EXPECT_LE(cli::flaws(closer),
+            std::max(cli::flaws(apart), static_cast<int>(0.02 * closer.label_audit.labels)));
+  EXPECT_NE(
+      std::find_if(closer.notes.begin(), closer.notes.end(),
+                   [](const std::string& n) { return n.find("1 mm apart, not 2 mm") != std::string::npos; }),
+      closer.notes.end());
+  EXPECT_EQ(unfold::check_unfolding(c.run.mesh, c.closer.unfolding), std::vector<std::string>{});
+}
+
+TEST(ChooseParts, PartsKeepTheirGapWhereASheetFewerIsOutOfReach) {
+  // Bob at 250 mm fills four sheets so that three would need to be 74% full: out of reach, so the parts
+  // are not packed again closer, and the layout is the one the asked gap gives.
+  const ApartAndCloser c = chosen_apart_and_closer("bob_128.obj", 250);
+  ASSERT_TRUE(c.apart.layout && c.closer.layout);
+  const std::size_t n = c.apart.layout->sheets.size();
+  ASSERT_GT(n, 1u);
+  EXPECT_GT(c.apart.layout->overall.coverage * n / (n - 1), cli::kCloserSpacingReach);
+  EXPECT_EQ(c.closer.layout->spacing_mm, 2);
+  EXPECT_EQ(c.closer.layout->sheets.size(), n);
+  EXPECT_EQ(c.closer.unfolding.piece_count, c.apart.unfolding.piece_count);
 }

@@ -95,3 +95,19 @@ TEST(Pipeline, WhereBothPreferencesLeaveLabelsUnclearTheNextSeedsUnfoldingPrints
   EXPECT_EQ(run.result.unfolding.piece_count, chosen->placements.size())
       << "the parts laid out are the run's";
 }
+
+TEST(Pipeline, PartsCloseUpOnlyWhereNoColourBleedsIntoTheGap) {
+  // Spot with its texture prints in colour, and its bleed (1 mm past every cut line by default) needs
+  // the whole 2 mm between parts; printed white, or a white model, the gap may close to 1 mm.
+  cli::ChooseOptions closer;
+  closer.closer_spacing_mm = cli::kCloserSpacing_mm;
+  const unfold::Mesh textured =
+      unfold::load_mesh(test::example_mesh("spot_textured/spot_triangulated.obj")).mesh;
+  const unfold::Mesh white = unfold::load_mesh(test::example_mesh("spot_128.obj")).mesh;
+  const layout::FillOptions fills;
+  EXPECT_EQ(cli::bleed_room(closer, textured, fills).closer_spacing_mm, layout::fill_spacing_mm(fills));
+  EXPECT_GE(layout::fill_spacing_mm(fills), layout::PackOptions{}.spacing_mm);
+  EXPECT_EQ(cli::bleed_room(closer, textured, std::nullopt).closer_spacing_mm, cli::kCloserSpacing_mm);
+  EXPECT_EQ(cli::bleed_room(closer, white, fills).closer_spacing_mm, cli::kCloserSpacing_mm);
+  EXPECT_FALSE(cli::bleed_room({}, textured, fills).closer_spacing_mm.has_value());
+}

@@ -16,6 +16,7 @@
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "in_process.hpp"
+#include "layout_options.hpp"
 #include "test_paths.hpp"
 
 using namespace foldkit;
@@ -288,4 +289,19 @@ TEST(CliUnfold, SeamListsUseTheFilesOwnVertexNumbers) {
       std::string::npos)
       << run.err;
   EXPECT_FALSE(fs::exists(dir / "net2.obj"));
+}
+
+TEST(CliUnfold, AGapAskedForHoldsEverywhereWhileTheDefaultMayCloseToSaveASheet) {
+  for (const std::string& line : {std::string{}, std::string{"--spacing 2mm"}, std::string{"--spacing 3"}}) {
+    CLI::App app;
+    cli::LayoutCliOptions options;
+    cli::add_layout_options(app, options);
+    app.parse(line, false);
+    const cli::ChooseOptions choose = cli::choose_options_of(options);
+    if (line.empty())
+      EXPECT_EQ(choose.closer_spacing_mm, cli::kCloserSpacing_mm);
+    else
+      EXPECT_FALSE(choose.closer_spacing_mm.has_value()) << line;
+    EXPECT_EQ(cli::to_layout_options(options).pack.spacing_mm, line == "--spacing 3" ? 3 : 2) << line;
+  }
 }

@@ -392,7 +392,9 @@ TEST(Layout, TheSpacedBoundHoldsOnEverySheetAndLiesBetweenTheAreaBoundAndTheShee
   const long by_area = static_cast<long>(std::ceil(used / (area.width() * area.height())));
   EXPECT_GE(spaced_sheet_bound(r, o), by_area);
   EXPECT_LE(spaced_sheet_bound(r, o), static_cast<long>(r.sheets.size()));
+  EXPECT_EQ(r.spacing_mm, o.pack.spacing_mm);
   LayoutResult exact;
+  exact.spacing_mm = o.pack.spacing_mm;  // the bound counts the gaps the layout kept
   exact.overall.spaced_area_mm2 = 2 * room;
   EXPECT_EQ(spaced_sheet_bound(exact, o), 2) << "areas that fill whole sheets need no sheet more";
   exact.overall.spaced_area_mm2 = 2 * room + 1;

@@ -1078,6 +1078,7 @@ PackOptions with_corner_kept(PackOptions p, const LayoutOptions& o) {
 LayoutResult scaled_like(const LayoutResult& r) {
   LayoutResult again;
   again.scale_mm_per_unit = r.scale_mm_per_unit;
+  again.spacing_mm = r.spacing_mm;
   again.size_mm = r.size_mm;
   return again;
 }
@@ -1174,6 +1175,7 @@ Attempt build(const unfold::Unfolding& u, const LayoutOptions& o, double scale, 
   LayoutResult& r = attempt.result;
   r.scale_mm_per_unit = scale;
   r.size_mm = scale * u.model_extent;
+  r.spacing_mm = o.pack.spacing_mm;
   Draft d = draw_pieces(u, o, scale);
   if (o.deadline && std::chrono::steady_clock::now() > *o.deadline)
     throw LayoutError("stopped at the time limit after drawing " + std::to_string(d.pieces.size()) +
@@ -1215,7 +1217,7 @@ Box2 printable_area(const LayoutOptions& o) {
 
 long spaced_sheet_bound(const LayoutResult& r, const LayoutOptions& o) {
   const Box2 area = printable_area(o);
-  const double half_gap = 0.5 * o.pack.spacing_mm;
+  const double half_gap = 0.5 * r.spacing_mm;
   // The rectangle grown by half a gap: its sides pushed out, its corners rounded.
   const double room_mm2 = (area.width() + 2 * half_gap) * (area.height() + 2 * half_gap) -
                           (4 - std::numbers::pi) * half_gap * half_gap;

@@ -125,6 +125,7 @@ struct LayoutResult {
   std::vector<Sheet> sheets;
   double scale_mm_per_unit = 1;  ///< model units -> mm
   double size_mm = 0;            ///< the model's largest dimension on paper
+  double spacing_mm = 0;         ///< the least gap its pieces keep (PackOptions::spacing_mm)
   std::vector<SheetStats> sheet_stats;
   SheetStats overall;
   std::vector<AssemblyStep> assembly;  ///< filled when hints are on
@@ -170,9 +171,10 @@ constexpr double kArrowLabelGap_mm = 1.6;
 /// The printable area of a sheet with these options, sheet frame (mm from the top-left, y down).
 Box2 printable_area(const LayoutOptions& options);
 
-/// The fewest sheets any packing of r's pieces (laid out with `options`) can take: their outlines grown
-/// by half the spacing (SheetStats::spaced_area_mm2) never overlap and lie within the printable area
-/// grown alike. Above the area bound where many or ragged pieces keep their gaps; 0 without pieces.
+/// The fewest sheets any packing of r's pieces (laid out on the paper of `options`) can take: their
+/// outlines grown by half the spacing they were packed at (LayoutResult::spacing_mm)
+/// (SheetStats::spaced_area_mm2) never overlap and lie within the printable area grown alike. Above the area
+/// bound where many or ragged pieces keep their gaps; 0 without pieces.
 long spaced_sheet_bound(const LayoutResult& r, const LayoutOptions& options);
 
 /// The rectangle (mm) a piece without its tabs must fit at its best rotation to be sure of a place on
