@@ -41,11 +41,10 @@ struct ChooseOptions {
   /// How parts that hold slits (seams too narrow for a glue tab) are opened, so that each slit runs
   /// between two parts and takes a tab, where that costs no sheet, no label and at most a part per tab.
   SlitOpening open_slits = SlitOpening::Better;
-  /// When set (below the layout's spacing), a layout that takes more sheets than any partition needs,
-  /// and whose parts would fill one sheet fewer to at most kCloserSpacingReach, is chosen again with the
-  /// pieces this far apart; that choice is kept when it saves a sheet with at most 1% of its labels
-  /// more flaws, and not over issue 12's 2% unless the first had as many. Unset: the layout's spacing
-  /// holds everywhere.
+  /// When set (below the layout's spacing), a layout worth it (closer_spacing_worth_trying) is chosen
+  /// again with the pieces this far apart; that choice is kept when it saves a sheet with at most 1% of
+  /// its labels more flaws, and not over issue 12's 2% unless the first had as many. Unset: the
+  /// layout's spacing holds everywhere.
   std::optional<double> closer_spacing_mm;
 };
 
@@ -57,6 +56,15 @@ inline constexpr double kCloserSpacing_mm = 1;
 /// bumpy_528's parts at 250 mm to 69.6% on a sheet fewer at 1 mm apart, and no run up to 1,000 faces
 /// that needed more saved a sheet at 1 mm (`bench --layout`, session 39).
 inline constexpr double kCloserSpacingReach = 0.72;
+
+/// Whether `held`, a layout of parts that takes more sheets than any partition needs (`least`,
+/// least_sheets), is worth choosing again with its parts kCloserSpacing_mm apart: a sheet fewer would
+/// be filled to at most kCloserSpacingReach, and its flaws (flaws()) are within issue 12's bar of 2% of
+/// its labels. Past that bar a closer choice may add no flaw at all to be kept, and none did: of the six
+/// such runs up to 1,000 faces (1,000-face meshes at 150 mm, plane_1000 and wingnut_1000 at 250 mm),
+/// the two that saved a sheet left 13% and 153% more flaws, and trying them cost plane_1000 and
+/// wingnut_1000 at 250 mm 60 s of CPU where 25 s now give the same sheets (session 40).
+bool closer_spacing_worth_trying(const layout::LayoutResult& held, long least);
 
 /// The parts a layout with `options` should be given: the unfolding itself with --fit, --no-split or
 /// when every piece fits; otherwise the best of the candidate partitions. `parts` says what every split

@@ -526,6 +526,31 @@ TEST(ChooseParts, WhereHalfTheGapBetweenPartsSavesASheetThePartsCloseToIt) {
   EXPECT_EQ(unfold::check_unfolding(c.run.mesh, c.closer.unfolding), std::vector<std::string>{});
 }
 
+TEST(ChooseParts, ALayoutIsChosenAgainCloserOnlyAboveItsBoundWithASheetFewerInReachAndItsLabelsLegible) {
+  // Four sheets 51% covered: three would be 68% full, within reach at a closer gap.
+  layout::LayoutResult held;
+  held.sheets.resize(4);
+  held.overall.coverage = 0.51;
+  held.label_audit.labels = 1000;
+  held.label_audit.crossing_lines = 15;
+  held.label_audit.touching = 5;
+  EXPECT_TRUE(cli::closer_spacing_worth_trying(held, 3));
+  EXPECT_FALSE(cli::closer_spacing_worth_trying(held, 4)) << "no partition takes fewer";
+  EXPECT_FALSE(cli::closer_spacing_worth_trying(held, 0)) << "nothing was split";
+
+  layout::LayoutResult fuller = held;
+  fuller.overall.coverage = 0.55;  // three sheets 73% full
+  EXPECT_FALSE(cli::closer_spacing_worth_trying(fuller, 3));
+
+  // Past 2% of its labels unclear, a closer choice could keep its sheet only adding no flaw at all.
+  layout::LayoutResult crowded = held;
+  crowded.label_audit.touching = 6;
+  EXPECT_FALSE(cli::closer_spacing_worth_trying(crowded, 3));
+  layout::LayoutResult slit = held;
+  slit.overall.dropped_tabs = 1;  // a seam without a tab counts as two unclear labels
+  EXPECT_FALSE(cli::closer_spacing_worth_trying(slit, 3));
+}
+
 TEST(ChooseParts, PartsKeepTheirGapWhereASheetFewerIsOutOfReach) {
   // Bob at 250 mm fills four sheets so that three would need to be 74% full: out of reach, so the parts
   // are not packed again closer, and the layout is the one the asked gap gives.
