@@ -411,11 +411,16 @@ Candidate best_full_layout(PartChooser& chooser, std::vector<Candidate>& candida
 constexpr double kLegibleLabelShare = 0.02;  // issue 12's bar
 constexpr double kPatchLabelShare = 0.01;
 
+// How many of `labels` may be unclear, or `share` of them more than another layout leaves.
+int labels_at_share(double share, int labels) {
+  return static_cast<int>(std::floor(share * labels));
+}
+
 // How many more labels the laid-out `patches` leave unclear than they may (negative: fewer).
 int unclear_over_allowed(const Candidate& patches, int net_unclear) {
   const int labels = patches.layout->label_audit.labels;
-  const int allowed = std::max(static_cast<int>(std::floor(kLegibleLabelShare * labels)),
-                               net_unclear + static_cast<int>(std::floor(kPatchLabelShare * labels)));
+  const int allowed = std::max(labels_at_share(kLegibleLabelShare, labels),
+                               net_unclear + labels_at_share(kPatchLabelShare, labels));
   return patches.layout->label_audit.unclear() - allowed;
 }
 
@@ -830,9 +835,9 @@ ChosenParts with_alternating_tabs_if_fewer(const unfold::Mesh& mesh, const unfol
 // `held` had as many. rocker_arm_350 at 150 mm fits one sheet at 1 mm with 6 of 390 labels unclear
 // (1.5%) where its two sheets had none: under 2% alone, but it took the label sweep's total over it.
 bool as_legible_as(const layout::LayoutResult& closer, const layout::LayoutResult& held) {
-  const double labels = closer.label_audit.labels;
-  const int more = static_cast<int>(std::floor(kPatchLabelShare * labels));
-  const int legible = static_cast<int>(std::floor(kLegibleLabelShare * labels));
+  const int labels = closer.label_audit.labels;
+  const int more = labels_at_share(kPatchLabelShare, labels);
+  const int legible = labels_at_share(kLegibleLabelShare, labels);
   return cli::flaws(closer) <= std::max(cli::flaws(held), std::min(legible, cli::flaws(held) + more));
 }
 
@@ -875,10 +880,10 @@ ChosenParts closer_if_a_sheet_fewer(const unfold::Mesh& mesh, const unfold::Unfo
 
 bool closer_spacing_worth_trying(const layout::LayoutResult& held, long least) {
   const long sheets = static_cast<long>(held.sheets.size());
-  if (least <= 0 || sheets <= least || sheets <= 1) return false;
+  if (least <= 0 || sheets <= least) return false;  // so sheets >= 2
   const double fewer_fill = held.overall.coverage * sheets / (sheets - 1);
-  const int legible = static_cast<int>(std::floor(kLegibleLabelShare * held.label_audit.labels));
-  return fewer_fill <= kCloserSpacingReach && flaws(held) <= legible;
+  return fewer_fill <= kCloserSpacingReach &&
+         flaws(held) <= labels_at_share(kLegibleLabelShare, held.label_audit.labels);
 }
 
 ChosenParts choose_parts(const unfold::Mesh& mesh, const unfold::Unfolding& u,
