@@ -64,6 +64,8 @@ nlohmann::json to_json(const unfold::LoadedMesh& loaded, const unfold::MeshStats
   j["file"] = loaded.mesh.name;
   j["face_count"] = s.faces;
   j["original_face_count"] = loaded.original_faces;
+  j["file_quad_count"] = loaded.file_quads;
+  j["file_ngon_count"] = loaded.file_ngons;
   j["vertex_count"] = s.vertices;
   j["edge_count"] = s.edges;
   j["boundary_edge_count"] = s.boundary_edges;
@@ -123,6 +125,9 @@ std::string table(const unfold::LoadedMesh& loaded, const unfold::MeshStats& s) 
   row("faces", std::to_string(s.faces) + (loaded.original_faces != s.faces
                                               ? " (" + std::to_string(loaded.original_faces) + " in the file)"
                                               : ""));
+  if (loaded.file_quads + loaded.file_ngons > 0)
+    row("polygons", std::to_string(loaded.file_quads) + " quads, " + std::to_string(loaded.file_ngons) +
+                        " n-gons: each flat one unfolds whole");
   row("vertices", std::to_string(s.vertices));
   row("edges", std::to_string(s.edges));
   row("boundary loops", std::to_string(s.boundary_loops));

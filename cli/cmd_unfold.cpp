@@ -63,6 +63,7 @@ void run_unfold(UnfoldArgs args) {
   refuse_output_over_inputs("-o", args.output, {args.mesh, args.unfold.cut_file, args.unfold.keep_file});
   finish_unfold_options(args.unfold);
   const layout::LayoutOptions layout_options = to_layout_options(args.layout);
+  layout::check_options(layout_options);
   ProgressLine line(!args.quiet);
   // The cuts of the parts `make` would print at this size (choose_and_note_parts below).
   UnfoldRun run = load_and_unfold(args.mesh, args.unfold, line,

@@ -153,6 +153,8 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
                                const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
                                const std::optional<layout::FillOptions>& fills,
                                const ChooseOptions& asked_choice) {
+  // Options that leave no room for a part fail before the mesh is read, not after its unfolding.
+  layout::check_options(asked_layout_options);
   const double limit_s = unfold_options.unfold.time_limit_s;
   const auto deadline =
       std::chrono::steady_clock::now() +

@@ -209,6 +209,17 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
       {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
       {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, "largest --size that fits"},
       {{"make", (dir / "missing.obj").string(), "-o", out}, 3, "missing.obj"},
+      // Margins that leave a sliver: --fit scaled the model to 0 mm and wrote an empty sheet.
+      {{"make", mesh, "-o", out, "--margin", "100mm"},
+       5,
+       "no room for a part in the 10x97 mm printable area"},
+      {{"make", mesh, "-o", out, "--paper", "30x30mm", "--size", "50mm"}, 5, "no room for a part"},
+      {{"make", mesh, "-o", out, "--regmarks", "--regmark-inset", "50mm", "--regmark-arm", "100mm"},
+       5,
+       "clear of the registration marks"},
+      {{"unfold", mesh, "-o", (dir / "x.obj").string(), "--margin", "100mm", "--size", "50mm"},
+       5,
+       "no room for a part"},
   };
   for (const Case& c : cases) {
     auto run = test::run_foldkit(c.args);

@@ -485,6 +485,22 @@ TEST(Layout, UnusableOptionsAreLayoutErrors) {
   EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
 }
 
+TEST(Layout, APrintableAreaWithNoRoomForAPartWithItsTabsIsRefusedAtAnySize) {
+  const auto& ex = test::unfolded_example("spot_128.obj");
+  LayoutOptions o = at_size(100);
+  o.margin_mm = 100;  // 10x97 mm printable, less 8 mm on every side for tabs and the gap
+  EXPECT_LT(piece_room_mm(o).x, kLeastPartRoom_mm);
+  EXPECT_THROW(check_options(o), LayoutError);
+  EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError);
+  o.size_mm.reset();
+  o.fit = true;
+  EXPECT_THROW(layout_sheets(ex.unfolding, o), LayoutError) << "--fit scaled the model to 0 mm";
+  o.tabs = false;
+  o.pack.spacing_mm = 0;  // then the 10 mm are room enough
+  EXPECT_NO_THROW(check_options(o));
+  EXPECT_GE(piece_room_mm(o).x, kLeastPartRoom_mm);
+}
+
 TEST(Layout, NoLabelIsTurnedBeyondAQuarterTurnAndEveryAmbiguousNumberIsMarked) {
   for (const char* name : kExamples) {
     const auto& ex = test::unfolded_example(name);

@@ -34,7 +34,9 @@ std::string format_mm(double v) {
   return buf;
 }
 
-void validate(const LayoutOptions& o) {
+}  // namespace
+
+void check_options(const LayoutOptions& o) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(o.paper_mm.x) || !positive(o.paper_mm.y)) throw LayoutError("paper size must be positive");
   if (!(std::isfinite(o.margin_mm) && o.margin_mm >= 0)) throw LayoutError("margin must be zero or positive");
@@ -47,7 +49,18 @@ void validate(const LayoutOptions& o) {
   if (area.empty() || area.width() < 10 || area.height() < 10)
     throw LayoutError("the margins leave no printable area on a " + format_mm(o.paper_mm.x) + "x" +
                       format_mm(o.paper_mm.y) + " mm sheet");
+  // Every part keeps a border for its tabs and the gap to the next part, and clear of the registration
+  // marks: where that leaves a sliver, --fit scaled the model to 0 mm and wrote an empty sheet.
+  const Vec2 room = piece_room_mm(o);
+  if (!(room.x >= kLeastPartRoom_mm && room.y >= kLeastPartRoom_mm))
+    throw LayoutError("no room for a part in the " + format_mm(area.width()) + "x" +
+                      format_mm(area.height()) + " mm printable area of a " + format_mm(o.paper_mm.x) + "x" +
+                      format_mm(o.paper_mm.y) + " mm sheet: a part keeps " + format_mm(piece_border_mm(o)) +
+                      " mm on every side for its tabs and the gap between parts" +
+                      (o.regmarks ? ", and clear of the registration marks" : ""));
 }
+
+namespace {
 
 // The label options as placed: arrows sit along the edges, so the labels are lifted above them.
 LabelOptions label_options_in_use(const LayoutOptions& o) {
@@ -1230,9 +1243,13 @@ double narrow_slit_gap_mm(const LayoutOptions& o) {
   return o.tabs ? narrow_slit_gap_mm(tab_options_in_use(o)) : 0;
 }
 
+double piece_border_mm(const LayoutOptions& o) {
+  return (o.tabs ? o.tab.width_mm : 0) + o.pack.spacing_mm + 2 * o.pack.cell_mm;
+}
+
 Vec2 piece_room_mm(const LayoutOptions& o) {
   const Box2 area = printable_area(o);
-  const double border = (o.tabs ? o.tab.width_mm : 0) + o.pack.spacing_mm + 2 * o.pack.cell_mm;
+  const double border = piece_border_mm(o);
   Vec2 room{area.width() - 2 * border, area.height() - 2 * border};
   if (o.regmarks) {
     // The marks' keep-out zones take corners of the area: the band between them across the longer
@@ -1257,7 +1274,7 @@ Vec2 piece_room_mm(const LayoutOptions& o) {
 namespace {
 
 void check_layout_input(const unfold::Unfolding& u, const LayoutOptions& o) {
-  validate(o);
+  check_options(o);
   if (u.num_faces() == 0 || u.piece_count == 0)
     throw LayoutError("nothing to lay out: the unfolding has no faces");
   if (!(u.model_extent > 0)) throw LayoutError("the model has no extent to scale");

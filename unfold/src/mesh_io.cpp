@@ -649,6 +649,8 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   // The first vertex number in the format's own face lists (glTF indices count from 0 too).
   out.index_base = ext == ".obj" || ext == ".stl" ? 1 : 0;
   out.original_faces = static_cast<int>(file.soup.polygons.size());
+  for (const auto& polygon : file.soup.polygons)
+    (polygon.size() == 4 ? out.file_quads : out.file_ngons) += polygon.size() > 3;
   detail::Repaired repaired = detail::repair_soup(std::move(file.soup), name, file.repair, out.notes);
   out.mesh = std::move(repaired.mesh);
   out.origin = std::move(repaired.origin);

@@ -143,11 +143,9 @@ bool is_zero_area(const std::vector<Vec3>& p, const Tri& t) {
   return norm(cross(b - a, c - a)) <= kZeroAreaRelative * l2 || l2 == 0.0;
 }
 
-std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::string>& notes,
-                                 TriOrigin& origin) {
+std::vector<Tri> triangulate_all(const PolygonSoup& soup, TriOrigin& origin) {
   std::vector<Tri> tris;
   tris.reserve(soup.polygons.size());
-  std::size_t quads = 0, ngons = 0;
   std::vector<Vec3> pts;
   int first_corner = 0;
   for (int p = 0; p < static_cast<int>(soup.polygons.size()); ++p) {
@@ -160,7 +158,6 @@ std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::strin
       origin.polygon.push_back(p);
       continue;
     }
-    (poly.size() == 4 ? quads : ngons)++;
     pts.clear();
     for (int v : poly)
       pts.push_back(soup.vertices[v]);
@@ -170,8 +167,6 @@ std::vector<Tri> triangulate_all(const PolygonSoup& soup, std::vector<std::strin
       origin.polygon.push_back(p);
     }
   }
-  if (quads + ngons > 0)
-    notes.push_back("triangulated " + plural(quads, "quad") + " and " + plural(ngons, "n-gon"));
   return tris;
 }
 
@@ -685,7 +680,7 @@ Repaired repair_soup(PolygonSoup soup, const std::string& name, const RepairOpti
     notes.push_back("ignored " + plural(unused, "vertex") + " used by no face");
 
   TriOrigin origin;
-  std::vector<Tri> tris = triangulate_all(soup, notes, origin);
+  std::vector<Tri> tris = triangulate_all(soup, origin);
   std::vector<Vec3> points = std::move(soup.vertices);
   if (!options.weld_all) {
     if (const std::size_t seams = weld_boundary_seams(points, tris, alias); seams > 0)

@@ -462,10 +462,10 @@ EdgeStates with_seams_moved(const Mesh& mesh, const Unfolding& u, const EdgeStat
 
 std::string PartTooLarge::message(int triangles, Vec2 room_mm, double asked_mm, double largest_mm,
                                   const std::string& size_name) {
-  return "a flat face (" + std::to_string(triangles) + " triangles) is larger than the " +
-         format_size(room_mm.x) + "x" + format_size(room_mm.y) + " mm room for a part at " + size_name + " " +
-         format_size(asked_mm) + "mm; the largest " + size_name + " that fits is " + format_size(largest_mm) +
-         "mm";
+  return "a flat face (" + std::to_string(triangles) + (triangles == 1 ? " triangle" : " triangles") +
+         ") is larger than the " + format_size(room_mm.x) + "x" + format_size(room_mm.y) +
+         " mm room for a part at " + size_name + " " + format_size(asked_mm) + "mm; the largest " +
+         size_name + " that fits is " + format_size(largest_mm) + "mm";
 }
 
 EdgeConstraints move_constraints(const Unfolding& u, const EdgeConstraints& given) {

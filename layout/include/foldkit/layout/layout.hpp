@@ -178,8 +178,20 @@ Box2 printable_area(const LayoutOptions& options);
 long spaced_sheet_bound(const LayoutResult& r, const LayoutOptions& options);
 
 /// The rectangle (mm) a piece without its tabs must fit at its best rotation to be sure of a place on
-/// a sheet: the printable area less room for tabs, spacing and the packing raster on every side.
+/// a sheet: the printable area less piece_border_mm on every side (and the registration marks' corners).
 Vec2 piece_room_mm(const LayoutOptions& options);
+
+/// The border a piece keeps on every side within the printable area: room for its tabs, the spacing
+/// and the packing raster (mm).
+double piece_border_mm(const LayoutOptions& options);
+
+/// The least side of piece_room_mm with which a layout can be made.
+constexpr double kLeastPartRoom_mm = 2;
+
+/// Throws LayoutError when the options are unusable: sizes not positive, margins that leave no printable
+/// area, or a printable area with no room for a part (piece_room_mm under kLeastPartRoom_mm). Checked
+/// by layout_sheets; callers that cut parts first check it before.
+void check_options(const LayoutOptions& options);
 
 /// Two sides of a seam within one piece that lie closer than this (mm) at both ends of its edge take no
 /// glue tab with these options (a narrow slit, tabs.hpp): a partition should put them in two parts.

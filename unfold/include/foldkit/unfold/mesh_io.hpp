@@ -44,10 +44,13 @@ struct VertexOrigin {
 /// A loaded mesh plus what the loader changed or noticed, for the user to read.
 struct LoadedMesh {
   Mesh mesh;
-  /// One line each, e.g. "welded 1,204 coincident vertices", "triangulated 12 quads and 2 n-gons",
-  /// "collapsed 3 zero-area faces", "3 connected components: unfolded separately".
+  /// One line each, e.g. "welded 1,204 coincident vertices", "collapsed 3 zero-area faces", "3 connected
+  /// components: unfolded separately". Quads and n-gons are split into triangles without a note: the
+  /// unfolding keeps every flat one whole (flat_faces.hpp) and notes those that are not flat.
   std::vector<std::string> notes;
   int original_faces = 0;  ///< faces in the file, before triangulation and decimation
+  int file_quads = 0;      ///< faces of the file with four corners
+  int file_ngons = 0;      ///< faces of the file with more than four corners
   VertexOrigin origin;
   /// Seams the file marks itself (OBJ `l` elements), one per segment of each line element.
   std::vector<FileEdge> file_seams;
