@@ -5,11 +5,15 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "../devices/src/render_internal.hpp"
 #include "foldkit/devices/render.hpp"
 #include "foldkit/layout/guide.hpp"
 #include "foldkit/layout/piece_letters.hpp"
+#include "foldkit/unfold/mesh_io.hpp"
+#include "foldkit/unfold/unfold.hpp"
 #include "layout_fixtures.hpp"
 #include "test_images.hpp"
 #include "test_paths.hpp"
@@ -149,4 +153,61 @@ TEST(Guide, AModelSeenEndOnStillFillsItsView) {
   ASSERT_FALSE(front.empty());
   // Its cell is a little under half the printable width; the sphere about the fish left it 0.23 of it.
   EXPECT_GT(front.width(), 0.4 * guide.printable_mm.width());
+}
+
+namespace {
+
+unfold::Mesh low_poly(const std::string& file) {
+  return unfold::load_mesh(test::source_dir() / "tests" / "data" / "lowpoly" / file).mesh;
+}
+
+// The mesh turned a quarter about X, so that what stood on Z stands on Y.
+unfold::Mesh turned_to_y_up(unfold::Mesh mesh) {
+  for (Vec3& v : mesh.vertices)
+    v = {v.x, v.z, -v.y};
+  return mesh;
+}
+
+}  // namespace
+
+TEST(Guide, AModelStandingOnAFlatBaseAlongZIsShownStandingAndOthersStandOnY) {
+  // barn.obj and drum.obj are drawn Z-up: seen Y-up, the barn lay on its side in every view.
+  for (const char* name : {"barn.obj", "drum.obj", "l_block.obj"}) {
+    const unfold::Mesh mesh = low_poly(name);
+    EXPECT_EQ(upright_axis(mesh).z, 1) << name;
+    EXPECT_EQ(upright_axis(turned_to_y_up(mesh)).y, 1) << name;
+  }
+  // Organic models have no base and follow the OBJ convention.
+  EXPECT_EQ(upright_axis(test::unfolded_example("spot_128.obj").mesh).y, 1);
+  EXPECT_EQ(upright_axis(test::unfolded_example("fish_350.obj").mesh).y, 1);
+}
+
+TEST(Guide, TheFrontViewOfAZUpBarnShowsItsGableWithTheRidgeOnTop) {
+  const unfold::Mesh mesh = low_poly("barn.obj");
+  unfold::UnfoldOptions uo;
+  uo.threads = 1;
+  const unfold::Unfolding u = unfold::unfold_mesh(mesh, uo).unfolding;
+  LayoutOptions o;
+  o.size_mm = 150;
+  const unfold::PartsResult parts = test::split_to_fit(mesh, u, o);
+  const LayoutResult r = layout_sheets(parts.unfolding, o);
+  const Sheet guide = guide_sheet(mesh, parts.unfolding, r);
+  const Vec2 middle = 0.5 * (guide.printable_mm.min + guide.printable_mm.max);
+  Box2 front;
+  std::vector<Vec2> corners;
+  for (const Path& p : guide.paths)
+    if (p.role == PathRole::Piece && p.filled && p.points_mm[0].x < middle.x && p.points_mm[0].y < middle.y)
+      for (Vec2 q : p.points_mm) {
+        front.add(q);
+        corners.push_back(q);
+      }
+  ASSERT_FALSE(front.empty());
+  // The gable end: a pentagon 4 wide and 5 high whose top is the ridge, one point in the middle. Seen
+  // from above (Y up) it was the roof, a 4 x 6 rectangle with two top corners.
+  EXPECT_NEAR(front.height() / front.width(), 5.0 / 4.0, 0.05);
+  Box2 top;
+  for (Vec2 q : corners)
+    if (q.y < front.min.y + 0.02 * front.height()) top.add(q);
+  EXPECT_LT(top.width(), 0.05 * front.width()) << "the ridge, not a flat top edge";
+  EXPECT_NEAR(0.5 * (top.min.x + top.max.x), 0.5 * (front.min.x + front.max.x), 0.02 * front.width());
 }

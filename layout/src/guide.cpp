@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <span>
 #include <utility>
@@ -24,7 +25,7 @@ constexpr double kLeastSeenShare = 0.1;  // of the sphere's width, the least ext
 
 struct View {
   const char* name;
-  Vec3 eye;  // from the model towards the viewer
+  Vec3 eye;  // from the model towards the viewer: along the model's right, up and front
 };
 
 constexpr std::array<View, 4> kViews = {{{"front", {0, 0, 1}},
@@ -32,17 +33,60 @@ constexpr std::array<View, 4> kViews = {{{"front", {0, 0, 1}},
                                          {"front right, from above", {1, 0.8, 1}},
                                          {"back left, from above", {-1, 0.8, -1}}}};
 
+// The model's own axes: which way is up, and which side faces the viewer of the front view.
+struct ModelFrame {
+  Vec3 right, up, front;
+  Vec3 operator()(Vec3 v) const { return right * v.x + up * v.y + front * v.z; }
+};
+
+// Y up, front towards +Z (OBJ and glTF convention); Z up, front towards -Y (CAD, STL, Blender's views).
+constexpr ModelFrame kYUp{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+constexpr ModelFrame kZUp{{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+
 struct Camera {
   Vec3 right, up, eye;
 };
 
-Camera camera(Vec3 eye_direction) {
+Camera camera(Vec3 eye_direction, Vec3 model_up) {
   const Vec3 eye = normalized(eye_direction);
-  Vec3 world_up{0, 1, 0};
-  if (std::fabs(dot(world_up, eye)) > 0.99) world_up = {0, 0, 1};
-  const Vec3 right = normalized(cross(world_up, eye));
+  const Vec3 right = normalized(cross(model_up, eye));
   return {right, cross(eye, right), eye};
 }
+
+// The share of the surface (0-1) that lies flat at the lowest level along `axis` (0 x, 1 y, 2 z),
+// facing down: the base a model stands on when that axis is up.
+double base_share(const unfold::Mesh& mesh, int axis) {
+  constexpr double kLevelTolerance = 0.005;  // of the model's largest dimension
+  const double facing_down = std::cos(10 * std::numbers::pi / 180);
+  const auto along = [axis](Vec3 v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
+  double lowest = 1e300, extent = 0;
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& v : mesh.vertices) {
+    lowest = std::min(lowest, along(v));
+    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+  }
+  extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  double base = 0, total = 0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const auto& t = mesh.faces[f];
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    const Vec3 n = cross(b - a, c - a);
+    const double twice_area = norm(n);
+    total += twice_area;
+    const bool on_floor = std::max({along(a), along(b), along(c)}) - lowest <= kLevelTolerance * extent;
+    if (twice_area > 0 && on_floor && -along(n) >= facing_down * twice_area) base += twice_area;
+  }
+  return total > 0 ? base / total : 0;
+}
+
+}  // namespace
+
+Vec3 upright_axis(const unfold::Mesh& mesh) {
+  return base_share(mesh, 2) > base_share(mesh, 1) ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
+}
+
+namespace {
 
 // A view's projection: model points to the sheet (mm, y down), centred in `area`.
 struct Projection {
@@ -210,7 +254,9 @@ void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
   sheet.texts.push_back(
       Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
   const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
-  const Projection projection = fitted_projection(mesh, camera(view.eye), centre, radius, area);
+  const ModelFrame& frame = upright_axis(mesh).z > 0 ? kZUp : kYUp;
+  const Projection projection =
+      fitted_projection(mesh, camera(frame(view.eye), frame.up), centre, radius, area);
   PartRaster raster;
   raster.area = area;
   raster.px = std::max(area.width(), area.height()) / kRaster;

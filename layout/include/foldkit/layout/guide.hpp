@@ -23,6 +23,12 @@ struct GuideOptions {
   double letter_mm = 4;  ///< cap height of the part letters on the views
 };
 
+/// Which way the model stands in the guide's views: +Z where more of its surface lies flat at its lowest Z,
+/// facing down, than at its lowest Y (a barn or a drum drawn for CAD, printing or by most low-poly
+/// generators stands on Z), else +Y (the OBJ and glTF convention, and organic models with no flat base).
+/// With Z up the front view looks along +Y.
+Vec3 upright_axis(const unfold::Mesh& mesh);
+
 /// The guide page for `unfolding` (of `mesh`) as laid out in `layout` (letters, sheets, glue order).
 /// Its paths are filled triangles in role Piece with Path::tint = the letter's rank and Path::shade
 /// the lighting; its texts are the letters (role Piece) and the titles (role Sheet).
