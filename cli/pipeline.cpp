@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <utility>
 
 #include "choose_parts.hpp"
 #include "foldkit/error.hpp"
+#include "length_option.hpp"
 #include "limits.hpp"
 #include "print_cuts.hpp"
 
@@ -127,6 +129,26 @@ void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, const 
   }
 }
 
+// Where the sheets are as few as the largest faces allow but more than their area needs, a builder
+// sees half-empty sheets and wonders: say that the faces' shapes set the count, and what takes fewer.
+void note_sheets_set_by_faces(const unfold::Unfolding& u, const layout::LayoutOptions& o,
+                              layout::LayoutResult& r) {
+  if (!o.size_mm || o.fit || !(u.model_extent > 0) || r.sheets.empty()) return;
+  const Box2 area = layout::printable_area(o);
+  const double used_mm2 = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
+  const long by_area =
+      std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
+  const long sheets = static_cast<long>(r.sheets.size());
+  if (sheets <= by_area) return;
+  const long by_shape = layout::shape_sheet_bound(flat_face_cores_mm(u, *o.size_mm / u.model_extent), area);
+  if (by_shape != sheets) return;
+  char paper[64];
+  std::snprintf(paper, sizeof paper, "%gx%g mm", o.paper_mm.x, o.paper_mm.y);
+  r.notes.push_back(std::to_string(sheets) + " sheets, the fewest that faces this large allow at " +
+                    format_length_mm(*o.size_mm) + " on " + paper + " paper (their area alone would fill " +
+                    std::to_string(by_area) + "): a smaller --size or a larger --paper takes fewer");
+}
+
 }  // namespace
 
 std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
@@ -197,6 +219,7 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
     throw LayoutError(mesh_file + ": " + e.what() + " (--time-limit " + limit +
                       " s bounds the whole command: give more time, a smaller --size or --max-faces)");
   }
+  note_sheets_set_by_faces(run.unfolded.result.unfolding, layout_options, run.layout);
   if (coloured)
     layout::add_fills(run.layout, run.unfolded.loaded.mesh, run.unfolded.result.unfolding, *fills);
   run.layout_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -231,6 +231,33 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
   EXPECT_FALSE(fs::exists(out)) << "no output file after an error";
 }
 
+TEST(CliMake, SheetsSetByTheFacesShapesRatherThanTheirAreaAreExplained) {
+  const fs::path dir = test::temp_dir("make-shape-bound");
+  const auto notes_of = [&](const char* name, const char* size) {
+    const fs::path mesh = test::source_dir() / "tests" / "data" / "lowpoly" / name;
+    auto run = test::run_foldkit(
+        {"make", mesh.string(), "--size", size, "-o", (dir / "m.svg").string(), "--no-guide", "--json"});
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    std::string notes;
+    for (const auto& n : j["notes"])
+      notes += n.get<std::string>() + "\n";
+    return std::pair(j["sheet_count"].get<int>(), notes);
+  };
+  // 18 squares 104 mm a side go two to an A4 sheet: 9 sheets, where their area would fit 5.
+  const auto [sheets, notes] = notes_of("rhombicuboctahedron.obj", "250mm");
+  EXPECT_EQ(sheets, 9);
+  EXPECT_NE(
+      notes.find("9 sheets, the fewest that faces this large allow at 250 mm on 210x297 mm paper (their "
+                 "area alone would fill 5): a smaller --size or a larger --paper takes fewer"),
+      std::string::npos)
+      << notes;
+  // Where the area sets the count, nothing to explain.
+  const auto [l_sheets, l_notes] = notes_of("l_block.obj", "150mm");
+  EXPECT_EQ(l_sheets, 2);
+  EXPECT_EQ(l_notes.find("the fewest that faces"), std::string::npos) << l_notes;
+}
+
 TEST(CliMake, NoInputFaceOfALowPolyModelIsSplitAcrossParts) {
   const fs::path dir = test::temp_dir("make-lowpoly-parts");
   for (const char* name : {"barn.obj", "drum.obj", "football.obj", "l_block.obj", "rhombicuboctahedron.obj",
