@@ -363,6 +363,9 @@ void run_make(MakeArgs args) {
     guide_options.paper_mm = layout_options.paper_mm;
     guide_options.margin_mm = layout_options.margin_mm;
     guide_options.model_name = layout_options.model_name;
+    guide_options.up = args.guide_up == "y"   ? layout::UpAxis::Y
+                       : args.guide_up == "z" ? layout::UpAxis::Z
+                                              : layout::UpAxis::Auto;
     guide = layout::guide_sheet(run.unfolded.loaded.mesh, run.unfolded.result.unfolding, r, guide_options);
   }
   Written w;
@@ -414,6 +417,11 @@ void setup_make(CLI::App& app) {
   cmd->add_flag("--no-guide", args->no_guide,
                 "No assembly guide (a last PDF page, NAME-guide.svg/.png beside SVG and PNG sheets, "
                 "NAME-guide.pdf in a bundle)");
+  cmd->add_option("--guide-up", args->guide_up,
+                  "Which axis is up in the guide's views: y (OBJ and glTF convention), z (CAD, STL, most "
+                  "low-poly models) or auto (z where the model stands on a flat base at its lowest z)")
+      ->check(CLI::IsMember({"auto", "y", "z"}))
+      ->capture_default_str();
   add_layout_options(*cmd, args->layout);
   add_colour_options(*cmd, args->colour);
   add_unfold_options(*cmd, args->unfold);

@@ -18,6 +18,7 @@ struct MakeArgs {
   bool json = false;
   bool quiet = false;
   bool no_guide = false;
+  std::string guide_up = "auto";  ///< auto, y or z: which way is up in the guide's views
   std::string mountain = "dash-dot", valley = "dashed";  ///< fold styles (names of fold_styles())
   UnfoldCliOptions unfold;
   LayoutCliOptions layout;

@@ -182,7 +182,10 @@ TEST(Guide, AModelStandingOnAFlatBaseAlongZIsShownStandingAndOthersStandOnY) {
   EXPECT_EQ(upright_axis(test::unfolded_example("fish_350.obj").mesh).y, 1);
 }
 
-TEST(Guide, TheFrontViewOfAZUpBarnShowsItsGableWithTheRidgeOnTop) {
+namespace {
+
+// The corners of the faces painted in the guide's front view (its top left quarter).
+std::vector<Vec2> front_view_of_barn(UpAxis up) {
   const unfold::Mesh mesh = low_poly("barn.obj");
   unfold::UnfoldOptions uo;
   uo.threads = 1;
@@ -191,16 +194,29 @@ TEST(Guide, TheFrontViewOfAZUpBarnShowsItsGableWithTheRidgeOnTop) {
   o.size_mm = 150;
   const unfold::PartsResult parts = test::split_to_fit(mesh, u, o);
   const LayoutResult r = layout_sheets(parts.unfolding, o);
-  const Sheet guide = guide_sheet(mesh, parts.unfolding, r);
+  GuideOptions g;
+  g.up = up;
+  const Sheet guide = guide_sheet(mesh, parts.unfolding, r, g);
   const Vec2 middle = 0.5 * (guide.printable_mm.min + guide.printable_mm.max);
-  Box2 front;
   std::vector<Vec2> corners;
   for (const Path& p : guide.paths)
     if (p.role == PathRole::Piece && p.filled && p.points_mm[0].x < middle.x && p.points_mm[0].y < middle.y)
-      for (Vec2 q : p.points_mm) {
-        front.add(q);
-        corners.push_back(q);
-      }
+      corners.insert(corners.end(), p.points_mm.begin(), p.points_mm.end());
+  return corners;
+}
+
+Box2 box_of(const std::vector<Vec2>& points) {
+  Box2 box;
+  for (Vec2 q : points)
+    box.add(q);
+  return box;
+}
+
+}  // namespace
+
+TEST(Guide, TheFrontViewOfAZUpBarnShowsItsGableWithTheRidgeOnTop) {
+  const std::vector<Vec2> corners = front_view_of_barn(UpAxis::Auto);
+  const Box2 front = box_of(corners);
   ASSERT_FALSE(front.empty());
   // The gable end: a pentagon 4 wide and 5 high whose top is the ridge, one point in the middle. Seen
   // from above (Y up) it was the roof, a 4 x 6 rectangle with two top corners.
@@ -210,4 +226,13 @@ TEST(Guide, TheFrontViewOfAZUpBarnShowsItsGableWithTheRidgeOnTop) {
     if (q.y < front.min.y + 0.02 * front.height()) top.add(q);
   EXPECT_LT(top.width(), 0.05 * front.width()) << "the ridge, not a flat top edge";
   EXPECT_NEAR(0.5 * (top.min.x + top.max.x), 0.5 * (front.min.x + front.max.x), 0.02 * front.width());
+}
+
+TEST(Guide, AnUpAxisAskedForOverridesTheOneFound) {
+  // Y up, the barn lies on its side: the front view looks down on its roof, 4 wide and 6 long.
+  const Box2 roof = box_of(front_view_of_barn(UpAxis::Y));
+  ASSERT_FALSE(roof.empty());
+  EXPECT_NEAR(roof.height() / roof.width(), 6.0 / 4.0, 0.05);
+  const Box2 gable = box_of(front_view_of_barn(UpAxis::Z));
+  EXPECT_NEAR(gable.height() / gable.width(), 5.0 / 4.0, 0.05);
 }

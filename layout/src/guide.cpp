@@ -254,7 +254,8 @@ void draw_view(const unfold::Mesh& mesh, const std::vector<int>& tint_of_face,
   sheet.texts.push_back(
       Text{view.name, {cell.min.x, cell.min.y + kText_mm}, kText_mm, 0, PathRole::Sheet, -1});
   const Box2 area{{cell.min.x, cell.min.y + kText_mm + 1}, cell.max};
-  const ModelFrame& frame = upright_axis(mesh).z > 0 ? kZUp : kYUp;
+  const bool z_up = o.up == UpAxis::Auto ? upright_axis(mesh).z > 0 : o.up == UpAxis::Z;
+  const ModelFrame& frame = z_up ? kZUp : kYUp;
   const Projection projection =
       fitted_projection(mesh, camera(frame(view.eye), frame.up), centre, radius, area);
   PartRaster raster;

@@ -16,7 +16,11 @@
 
 namespace foldkit::layout {
 
+/// Which way is up in the guide's views: found from the mesh (upright_axis), or as the file was drawn.
+enum class UpAxis { Auto, Y, Z };
+
 struct GuideOptions {
+  UpAxis up = UpAxis::Auto;
   Vec2 paper_mm{210, 297};
   double margin_mm = 10;
   std::string model_name;
@@ -26,7 +30,8 @@ struct GuideOptions {
 /// Which way the model stands in the guide's views: +Z where more of its surface lies flat at its lowest Z,
 /// facing down, than at its lowest Y (a barn or a drum drawn for CAD, printing or by most low-poly
 /// generators stands on Z), else +Y (the OBJ and glTF convention, and organic models with no flat base).
-/// With Z up the front view looks along +Y.
+/// With Z up the front view looks along +Y. A box has no such cue: it is shown on its largest face
+/// (GuideOptions::up says otherwise).
 Vec3 upright_axis(const unfold::Mesh& mesh);
 
 /// The guide page for `unfolding` (of `mesh`) as laid out in `layout` (letters, sheets, glue order).
