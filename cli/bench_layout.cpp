@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 #include <regex>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +20,7 @@
 #include "foldkit/layout/paper.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
 #include "foldkit/unfold/unfold.hpp"
+#include "foldkit/unfold/unfolding.hpp"
 #include "json_report.hpp"
 #include "layout_options.hpp"
 #include "median.hpp"
@@ -43,6 +46,8 @@ struct Row {
   double coverage = 0, seconds = 0;
   double used_sheets = 0;  ///< area of parts and tabs over one printable area
   double cpu_seconds = 0;  ///< process CPU time: the machine may be shared, the wall clock then lies
+  /// What unfold::check_unfolding finds wrong with the parts (congruence, overlap, partners): none.
+  std::vector<std::string> part_problems;
 };
 
 std::vector<fs::path> mesh_files(const fs::path& corpus) {
@@ -73,6 +78,7 @@ Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
     const unfold::Unfolding& chosen = run.result.unfolding;
     const layout::LayoutResult r = laid_out ? std::move(*laid_out) : layout::layout_sheets(chosen, o);
     stop();
+    row.part_problems = unfold::check_unfolding(run.loaded.mesh, chosen);
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
@@ -99,6 +105,8 @@ void print_row(const Row& row) {
     std::printf("%-28s %5d %5.0f | %6ld %5ld %5ld %6ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", row.mesh.c_str(),
                 row.faces, row.size_mm, row.sheets, row.bound, row.shape_bound, row.spaced_bound, row.parts,
                 100 * row.coverage, row.no_tab, row.seams, row.seconds, row.cpu_seconds);
+  if (!row.part_problems.empty())
+    std::printf("  parts fail the unfolding checks: %s\n", row.part_problems.front().c_str());
   std::fflush(stdout);
 }
 
@@ -146,6 +154,7 @@ struct Totals {
   long over = 0;            ///< runs more than one sheet over the area bound
   long over_reachable = 0;  ///< runs more than one sheet over the largest bound
   long unreachable = 0;     ///< runs whose shape or spaced bound exceeds the area bound
+  long invalid = 0;         ///< runs whose parts fail unfold::check_unfolding
   double seconds = 0, cpu_seconds = 0;
   std::vector<double> coverage;
   std::vector<FilledRun> filled;  ///< the runs as the fill yardstick sees them (sheet_fill.hpp)
@@ -165,6 +174,7 @@ Totals totals(const std::vector<Row>& rows) {
     t.over += r.sheets > r.bound + 1;
     t.over_reachable += r.sheets > larger + 1;
     t.unreachable += larger > r.bound;
+    t.invalid += !r.part_problems.empty();
     t.seconds += r.seconds;
     t.cpu_seconds += r.cpu_seconds;
     t.coverage.push_back(r.coverage);
@@ -224,7 +234,8 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                 {"coverage", r.coverage},
                 {"used_area_ratio", r.used_sheets},
                 {"seam_count", r.seams},
-                {"seams_without_tab_count", r.no_tab}});
+                {"seams_without_tab_count", r.no_tab},
+                {"part_problems", r.part_problems}});
     }
     out["rows"].push_back(j);
   }
@@ -241,6 +252,8 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                    {"larger_bound_sheet_count", t.larger_bound},
                    {"runs_area_bound_unreachable_count", t.unreachable},
                    {"runs_more_than_one_over_larger_bound_count", t.over_reachable},
+                   // parts failing the unfolding's invariants (congruence, overlap, partners)
+                   {"runs_with_invalid_parts_count", t.invalid},
                    {"median_coverage", median(t.coverage)},
                    // every sheet filled to this share of its printable area gives the sheets counted
                    {"equivalent_fill_fraction", f.now},
@@ -268,6 +281,8 @@ void print_totals(const std::vector<Row>& rows, const Totals& t) {
       t.sheets, t.bound, t.ratio(), t.over, t.unreachable, t.larger_bound,
       t.larger_bound > 0 ? double(t.sheets) / double(t.larger_bound) : NAN, t.over_reachable,
       100 * median(t.coverage), no_tab, t.seconds, t.cpu_seconds);
+  std::printf("parts checked (congruent, overlap-free, partners matched): %zu runs, %ld failing\n",
+              t.coverage.size(), t.invalid);
   const Fills f = fills(t);
   if (!std::isnan(f.now))
     std::printf(

@@ -174,6 +174,11 @@ TEST(CliJson, BenchAndTheLayoutBenchFollowTheScheme) {
       run_foldkit({"bench", corpus.string(), "--methods", "mst", "--json", "--time-limit", "20"}), "bench");
   ASSERT_EQ(bench["rows"].size(), 1u);
   EXPECT_EQ(bench["rows"][0]["face_count"].get<int>(), 128);
-  expect_scheme(run_foldkit({"bench", corpus.string(), "--layout", "--sizes", "150", "--json"}),
-                "bench --layout");
+  const json layout = expect_scheme(
+      run_foldkit({"bench", corpus.string(), "--layout", "--sizes", "150", "--json"}), "bench --layout");
+  ASSERT_EQ(layout["rows"].size(), 1u);
+  // Every run's parts are checked as every unfolding is: congruent, overlap-free, partners matched.
+  EXPECT_TRUE(layout["rows"][0]["part_problems"].is_array());
+  EXPECT_TRUE(layout["rows"][0]["part_problems"].empty()) << layout["rows"][0].dump();
+  EXPECT_EQ(layout["totals"]["runs_with_invalid_parts_count"], 0);
 }
