@@ -22,15 +22,6 @@ double surface_area(const unfold::Mesh& mesh) {
 
 }  // namespace
 
-double largest_dimension(const unfold::Mesh& mesh) {
-  Vec3 lo = mesh.vertices.front(), hi = lo;
-  for (const Vec3& p : mesh.vertices) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-}
-
 // Rounded as the renderer rounds (render_cairo.cpp).
 void check_png_raster(Vec2 paper_mm, double dpi) {
   const double width = std::round(paper_mm.x / kMmPerInch * dpi),
@@ -48,7 +39,7 @@ void check_png_raster(Vec2 paper_mm, double dpi) {
 
 void check_sheet_budget(const unfold::Mesh& mesh, const layout::LayoutOptions& options) {
   if (!options.size_mm || options.fit || mesh.vertices.empty()) return;
-  const double extent = largest_dimension(mesh);
+  const double extent = unfold::bounds_of(mesh).largest_dimension();
   if (!(extent > 0)) return;
   const Box2 area = layout::printable_area(options);
   const double sheet_mm2 = area.width() * area.height();

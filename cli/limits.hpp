@@ -29,10 +29,6 @@ inline constexpr double kMaxPngPixels = 150e6;
 /// A layout needs at most this many sheets (the packer keeps a raster of each).
 inline constexpr int kMaxSheets = 500;
 
-/// The model's largest dimension along x, y or z (model units; what --size sets). The mesh must have
-/// vertices.
-double largest_dimension(const unfold::Mesh& mesh);
-
 /// Throws Error (usage) when a `paper_mm` sheet at `dpi` is over kMaxPngPixels, naming the largest dpi.
 void check_png_raster(Vec2 paper_mm, double dpi);
 

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "foldkit/layout/tabs.hpp"
-#include "limits.hpp"
 
 namespace foldkit::cli {
 namespace {
@@ -17,7 +16,7 @@ constexpr double kTypicalDigits = 2;
 unfold::CutOptions cuts_for_print(const unfold::Mesh& mesh, const layout::LayoutOptions& o,
                                   unfold::CutOptions cuts) {
   if (!o.size_mm || o.fit || !o.numbers || mesh.vertices.empty()) return cuts;
-  const double extent = largest_dimension(mesh);
+  const double extent = unfold::bounds_of(mesh).largest_dimension();
   if (!(extent > 0) || !(*o.size_mm > 0)) return cuts;
   const layout::LabelOptions& label = o.label;
   // The label's box, standing on the edge: from the edge to the clearance above the cap height, and the

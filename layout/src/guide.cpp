@@ -59,14 +59,8 @@ double base_share(const unfold::Mesh& mesh, int axis) {
   constexpr double kLevelTolerance = 0.005;  // of the model's largest dimension
   const double facing_down = std::cos(10 * std::numbers::pi / 180);
   const auto along = [axis](Vec3 v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
-  double lowest = 1e300, extent = 0;
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& v : mesh.vertices) {
-    lowest = std::min(lowest, along(v));
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-  }
-  extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const unfold::MeshBounds bounds = unfold::bounds_of(mesh);
+  const double lowest = along(bounds.lo), level = kLevelTolerance * bounds.largest_dimension();
   double base = 0, total = 0;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     const auto& t = mesh.faces[f];
@@ -74,7 +68,7 @@ double base_share(const unfold::Mesh& mesh, int axis) {
     const Vec3 n = cross(b - a, c - a);
     const double twice_area = norm(n);
     total += twice_area;
-    const bool on_floor = std::max({along(a), along(b), along(c)}) - lowest <= kLevelTolerance * extent;
+    const bool on_floor = std::max({along(a), along(b), along(c)}) - lowest <= level;
     if (twice_area > 0 && on_floor && -along(n) >= facing_down * twice_area) base += twice_area;
   }
   return total > 0 ? base / total : 0;
@@ -374,12 +368,8 @@ std::vector<std::string> guide_notes(const unfold::Unfolding& u, const LayoutRes
 
 // The centre of the mesh's bounding box and the radius of the sphere about it that holds the mesh.
 std::pair<Vec3, double> bounding_sphere(const unfold::Mesh& mesh) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& v : mesh.vertices) {
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-  }
-  const Vec3 centre = (lo + hi) * 0.5;
+  const unfold::MeshBounds bounds = unfold::bounds_of(mesh);
+  const Vec3 centre = (bounds.lo + bounds.hi) * 0.5;
   double radius = 0;
   for (const Vec3& v : mesh.vertices)
     radius = std::max(radius, norm(v - centre));

@@ -132,6 +132,16 @@ Vec3 face_normal(const Mesh& mesh, int f) {
   return normalized(cross(c[1] - c[0], c[2] - c[0]));
 }
 
+MeshBounds bounds_of(const Mesh& mesh) {
+  if (mesh.vertices.empty()) return {};
+  MeshBounds b{mesh.vertices.front(), mesh.vertices.front()};
+  for (const Vec3& p : mesh.vertices) {
+    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+  }
+  return b;
+}
+
 double face_area(const Mesh& mesh, int f) {
   const auto c = mesh.corners(f);
   return 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));

@@ -57,14 +57,7 @@ Unfolding flatten(const Mesh& mesh, const EdgeStates& state) {
     ue.fold_angle = fold_angle(mesh, e);
     ue.length = edge_length(mesh, e);
   }
-  if (!mesh.vertices.empty()) {
-    Vec3 lo = mesh.vertices[0], hi = lo;
-    for (const Vec3& p : mesh.vertices) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    u.model_extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-  }
+  if (!mesh.vertices.empty()) u.model_extent = bounds_of(mesh).largest_dimension();
 
   std::vector<int> parent_edge(nf, -1);
   std::queue<int> queue;

@@ -1,6 +1,7 @@
 #pragma once
 // The triangle mesh every stage works on: a value type with its own edge connectivity, so that no
 // OpenMesh type escapes unfold/.
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -78,6 +79,14 @@ struct Mesh {
 /// finite coordinates, every edge in at most two faces traversed in opposite directions, every
 /// vertex a single fan. Throws InputError(name, problem) otherwise.
 Mesh make_mesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> faces, std::string name);
+
+/// The mesh's axis-aligned bounding box, model units (both corners 0 without vertices).
+struct MeshBounds {
+  Vec3 lo, hi;
+  /// The largest of its three sides: the model's size that --size sets.
+  double largest_dimension() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}); }
+};
+MeshBounds bounds_of(const Mesh& mesh);
 
 /// Length of edge e in model units.
 double edge_length(const Mesh& mesh, int e);
