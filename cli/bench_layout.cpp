@@ -82,9 +82,8 @@ Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
     const Box2 area = layout::printable_area(o);
     const double used = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
     row.sheets = static_cast<long>(r.sheets.size());
-    row.bound = std::max(1L, static_cast<long>(std::ceil(used / (area.width() * area.height()) - 1e-9)));
-    row.shape_bound =
-        layout::shape_sheet_bound(flat_face_cores_mm(chosen, *o.size_mm / chosen.model_extent), area);
+    row.bound = area_sheet_bound(o, used);
+    row.shape_bound = flat_face_sheet_bound(chosen, o);
     row.spaced_bound = layout::spaced_sheet_bound(r, o);
     row.parts = chosen.piece_count;
     row.seams = chosen.seam_count();

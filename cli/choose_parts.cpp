@@ -250,13 +250,12 @@ void resplit_last_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o
   }
 }
 
-// No partition needs fewer sheets than its area: reaching that bound ends the trials.
+}  // namespace
+
 long area_sheet_bound(const layout::LayoutOptions& o, double used_mm2) {
   const Box2 area = layout::printable_area(o);
   return std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
 }
-
-}  // namespace
 
 std::vector<layout::Polygon> flat_face_cores_mm(const unfold::Unfolding& u, double mm_per_unit) {
   const std::vector<int> face_of = unfold::flat_face_of(u);
@@ -302,11 +301,14 @@ Vec2 tile_room_mm(const layout::LayoutOptions& o, int tiles) {
           std::max(0.0, (room.y + 2 * border) / cut.y - 2 * border)};
 }
 
+long flat_face_sheet_bound(const unfold::Unfolding& u, const layout::LayoutOptions& o) {
+  if (!o.size_mm || !(u.model_extent > 0)) return 0;
+  return layout::shape_sheet_bound(flat_face_cores_mm(u, *o.size_mm / u.model_extent),
+                                   layout::printable_area(o));
+}
+
 long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, double used_mm2) {
-  const long area = area_sheet_bound(o, used_mm2);
-  if (!o.size_mm || !(u.model_extent > 0)) return area;
-  return std::max(area, layout::shape_sheet_bound(flat_face_cores_mm(u, *o.size_mm / u.model_extent),
-                                                  layout::printable_area(o)));
+  return std::max(area_sheet_bound(o, used_mm2), flat_face_sheet_bound(u, o));
 }
 
 int flaws(const layout::LayoutResult& r) {

@@ -99,8 +99,16 @@ std::vector<layout::Polygon> flat_face_cores_mm(const unfold::Unfolding& u, doub
 /// spacing, so parts grown to it lie `tiles` to a sheet. 1 (or less): the whole room.
 Vec2 tile_room_mm(const layout::LayoutOptions& o, int tiles);
 
+/// The fewest sheets parts and tabs taking `used_mm2` can fill: their area over the printable area of `o`,
+/// rounded up (at least 1). No partition needs fewer.
+long area_sheet_bound(const layout::LayoutOptions& o, double used_mm2);
+
+/// The shape bound of the flat faces of `u` at the size of `o` (layout::shape_sheet_bound of
+/// flat_face_cores_mm); 0 without a size.
+long flat_face_sheet_bound(const unfold::Unfolding& u, const layout::LayoutOptions& o);
+
 /// The fewest sheets any partition of `u` can take with `o`: the larger of the area bound for parts and
-/// tabs taking `used_mm2` and the shape bound of the flat faces (layout::shape_sheet_bound).
+/// tabs taking `used_mm2` and the shape bound of the flat faces.
 long least_sheets(const unfold::Unfolding& u, const layout::LayoutOptions& o, double used_mm2);
 
 }  // namespace foldkit::cli

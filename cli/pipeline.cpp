@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <utility>
@@ -134,14 +133,9 @@ void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, const 
 void note_sheets_set_by_faces(const unfold::Unfolding& u, const layout::LayoutOptions& o,
                               layout::LayoutResult& r) {
   if (!o.size_mm || o.fit || !(u.model_extent > 0) || r.sheets.empty()) return;
-  const Box2 area = layout::printable_area(o);
-  const double used_mm2 = r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
-  const long by_area =
-      std::max(1L, static_cast<long>(std::ceil(used_mm2 / (area.width() * area.height()) - 1e-9)));
+  const long by_area = area_sheet_bound(o, r.overall.piece_area_mm2 + r.overall.tab_area_mm2);
   const long sheets = static_cast<long>(r.sheets.size());
-  if (sheets <= by_area) return;
-  const long by_shape = layout::shape_sheet_bound(flat_face_cores_mm(u, *o.size_mm / u.model_extent), area);
-  if (by_shape != sheets) return;
+  if (sheets <= by_area || flat_face_sheet_bound(u, o) != sheets) return;
   char paper[64];
   std::snprintf(paper, sizeof paper, "%gx%g mm", o.paper_mm.x, o.paper_mm.y);
   r.notes.push_back(std::to_string(sheets) + " sheets, the fewest that faces this large allow at " +
