@@ -225,6 +225,10 @@ struct ObjFacts {
   std::vector<FileEdge> seams;              ///< `l` (line) elements
   std::vector<std::string> material_names;  ///< `usemtl` names in order of first use
   std::vector<int> face_material_name;      ///< per face, index into material_names (-1: none)
+  /// Every `v` line's coordinates as written, in double precision: OpenMesh's reader narrows them to
+  /// float, which moves a point of a model placed far from the origin (a building at its survey
+  /// coordinates, 5,412,345.71 m north) by up to a quarter of a metre.
+  std::vector<Vec3> positions;
 };
 
 ObjFacts check_obj_text(const std::string& text, const std::string& name, int face_limit) {
@@ -262,6 +266,7 @@ ObjFacts check_obj_text(const std::string& text, const std::string& name, int fa
     const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
     if (tag == "v") {
       ++vertices;
+      Vec3 position;
       for (int k = 0; k < 3; ++k) {
         const std::string_view tok = next_token(q, eol);
         if (tok.empty())
@@ -277,7 +282,9 @@ ObjFacts check_obj_text(const std::string& text, const std::string& name, int fa
         if (!in_coordinate_range(x))
           throw InputError(name, "vertex " + std::to_string(vertices) + ": coordinate out of range '" +
                                      std::string(tok.substr(0, 32)) + "'" + where());
+        (k == 0 ? position.x : k == 1 ? position.y : position.z) = x;
       }
+      facts.positions.push_back(position);
     } else if (tag == "l") {
       read_obj_line_element(q, eol, vertices, name, static_cast<int>(line_no), seams);
     } else {
@@ -553,6 +560,30 @@ struct FileSoup {
   std::vector<FileEdge> seams;     ///< OBJ `l` elements
 };
 
+// How far OpenMesh's float narrowing may move a point, as a share of the model's largest dimension,
+// before the OBJ's coordinates are taken as written: a millionth is 0.15 micrometres at 150 mm. Below it
+// the model is read as Blender and every float-based tool read it, and as foldkit always has.
+constexpr double kFloatShiftShare = 1e-6;
+
+// The OBJ's vertices as written (ObjFacts::positions) in place of OpenMesh's single-precision copies,
+// where the narrowing moved a point by more than kFloatShiftShare of the model's size and the two are the
+// same vertices: as many, each the same point once narrowed to float.
+void keep_double_positions(std::vector<Vec3> written, PolygonSoup& soup) {
+  if (written.size() != soup.vertices.size() || written.empty()) return;
+  const auto narrowed = [](double x) { return static_cast<double>(static_cast<float>(x)); };
+  Vec3 lo = written.front(), hi = written.front();
+  double shift = 0;
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const Vec3 &w = written[i], &read = soup.vertices[i];
+    if (narrowed(w.x) != read.x || narrowed(w.y) != read.y || narrowed(w.z) != read.z) return;
+    lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+    hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+    shift = std::max({shift, std::fabs(w.x - read.x), std::fabs(w.y - read.y), std::fabs(w.z - read.z)});
+  }
+  if (shift > kFloatShiftShare * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}))
+    soup.vertices = std::move(written);
+}
+
 // OBJ, STL and PLY through OpenMesh's readers into the soup (their text already checked), with the colours
 // and textures they name.
 void read_with_openmesh(const fs::path& path, const std::string& ext, const std::string& bytes, ObjFacts obj,
@@ -567,6 +598,7 @@ void read_with_openmesh(const fs::path& path, const std::string& ext, const std:
   read_options += OpenMesh::IO::Options::VertexColor;
   if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
     throw InputError(name, "unparsable " + ext.substr(1) + " file");
+  keep_double_positions(std::move(obj.positions), out.soup);
   // map_Kd names are relative to the MTL file, which mtllib names relative to the OBJ.
   fs::path texture_dir = path.parent_path();
   if (ext == ".obj")
