@@ -6,12 +6,13 @@ the low-poly models, at most 2% on the 350-500-face meshes).
 usage: bench/label_sweep.py [FOLDKIT] [CORPUS] [-- extra make options]
        (defaults: build/cli/foldkit, ../shared/meshes)
 """
-import glob
 import json
 import os
 import subprocess
 import sys
 import tempfile
+
+from corpus import corpus_files, foldkit_and_corpus
 
 
 def faces_of(path):
@@ -22,13 +23,11 @@ def faces_of(path):
 def main(argv):
     extra = argv[argv.index('--') + 1:] if '--' in argv else []
     args = argv[:argv.index('--')] if '--' in argv else argv
-    foldkit = args[0] if len(args) > 0 else 'build/cli/foldkit'
-    corpus = args[1] if len(args) > 1 else '../shared/meshes'
-    if not os.path.isdir(corpus):
-        print(f'label_sweep: no corpus at {corpus}: skipped')
+    found = foldkit_and_corpus(args, 'label_sweep')
+    if not found:
         return 0
-    files = sorted(glob.glob(os.path.join(corpus, 'lowpoly', '*.obj')))
-    files += [f for f in sorted(glob.glob(os.path.join(corpus, '*.obj'))) if 350 <= faces_of(f) <= 500]
+    foldkit, corpus = found
+    files = corpus_files(corpus, lambda f: 350 <= faces_of(f) <= 500)
     totals = {'lowpoly': [0, 0], 'mid': [0, 0]}
     print('%-32s %5s %6s %6s %6s %6s' % ('mesh', 'faces', 'labels', 'cross', 'touch', 'share'))
     with tempfile.TemporaryDirectory() as out:

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -39,7 +40,23 @@ void print_summary(const UnfoldArgs& args, const UnfoldRun& run, int cut_edges) 
                args.output.c_str());
 }
 
-nlohmann::json summary_json(const UnfoldArgs& args, const UnfoldRun& run, int cut_edges) {
+// At a fixed size, the scale of the net and the room every part was fitted to (at the gap the parts
+// were chosen at, which may be closer than asked where that saved a sheet): what a script needs to check
+// the parts against the paper (tests/tools/net_check.py).
+struct PartRoom {
+  double mm_per_unit = 0;
+  Vec2 room_mm;
+};
+
+std::optional<PartRoom> part_room(const unfold::Unfolding& u, layout::LayoutOptions o,
+                                  const std::optional<layout::LayoutResult>& laid_out) {
+  if (!o.size_mm || o.fit || !(u.model_extent > 0)) return std::nullopt;
+  if (laid_out) o.pack.spacing_mm = laid_out->spacing_mm;
+  return PartRoom{*o.size_mm / u.model_extent, layout::piece_room_mm(o)};
+}
+
+nlohmann::json summary_json(const UnfoldArgs& args, const UnfoldRun& run, int cut_edges,
+                            const std::optional<PartRoom>& room) {
   const unfold::Unfolding& u = run.result.unfolding;
   nlohmann::json j{{"file", args.mesh},
                    {"face_count", u.num_faces()},
@@ -52,6 +69,10 @@ nlohmann::json summary_json(const UnfoldArgs& args, const UnfoldRun& run, int cu
   for (const auto& n : run.result.notes)
     j["notes"].push_back(n);
   if (!args.output.empty()) j["output"] = args.output;
+  if (room) {
+    j["scale_mm_per_unit"] = room->mm_per_unit;
+    j["part_room_mm"] = {room->room_mm.x, room->room_mm.y};
+  }
   return j;
 }
 
@@ -71,8 +92,9 @@ void run_unfold(UnfoldArgs args) {
                                     o.cuts = cuts_for_print(loaded.mesh, layout_options, o.cuts);
                                   });
   // make's default colour options: a coloured model keeps the gap its bleed needs there too.
-  choose_and_note_parts(run, layout_options,
-                        bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));
+  const std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(
+      run, layout_options,
+      bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));
   line.clear();
   const unfold::Unfolding& u = run.result.unfolding;
   if (!args.output.empty())
@@ -82,7 +104,8 @@ void run_unfold(UnfoldArgs args) {
   for (const auto& e : u.edges)
     cut_edges += e.cut ? 1 : 0;
   if (args.json)
-    std::cout << versioned(summary_json(args, run, cut_edges)).dump(2) << "\n";
+    std::cout << versioned(summary_json(args, run, cut_edges, part_room(u, layout_options, laid_out))).dump(2)
+              << "\n";
   else
     print_summary(args, run, cut_edges);
 }

@@ -91,10 +91,6 @@ devices::BundleOptions options(const std::string& name) {
   return o;
 }
 
-std::string python() {
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
 // The share of a print's pixels that are tinted (not white, grey or black): the model's colour.
 double tinted_share(const test::RgbImage& img) {
   std::size_t tinted = 0;
@@ -201,8 +197,8 @@ TEST(Bundle, PngsSayTheirResolutionSoProgramsOpenThemAtPrintSize) {
     EXPECT_EQ(b.substr(41, 9), std::string("\0\0\x2e\x23\0\0\x2e\x23\x01", 9)) << f;
   }
   // Still a PNG every reader takes (the chunk's CRC is right): the alpha check decodes it.
-  if (std::system((python() + " -c pass >/dev/null 2>&1").c_str()) == 0) {
-    const std::string cmd = python() +
+  if (std::system((test::debian_python() + " -c pass >/dev/null 2>&1").c_str()) == 0) {
+    const std::string cmd = test::debian_python() +
                             " -c \"import zlib,struct,sys; b=open(sys.argv[1],'rb').read(); "
                             "l,=struct.unpack('>I',b[33:37]); "
                             "sys.exit(0 if zlib.crc32(b[37:41+l])==struct.unpack('>I',b[41+l:45+l])[0] "
@@ -214,11 +210,12 @@ TEST(Bundle, PngsSayTheirResolutionSoProgramsOpenThemAtPrintSize) {
 
 TEST(Bundle, PartPngsAreTransparentOutsideThePieceAndOpaqueInside) {
   const fs::path dir = test::temp_dir("bundle-alpha") / "out";
-  if (std::system((python() + " -c pass >/dev/null 2>&1").c_str()) != 0)
+  if (std::system((test::debian_python() + " -c pass >/dev/null 2>&1").c_str()) != 0)
     GTEST_SKIP() << "python3 is not installed: the part PNG's pixels are not checked";
   devices::write_bundle({test::two_piece_sheet()}, dir, options("box"));
   const fs::path out = dir.parent_path() / "alpha.txt";
-  const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/png_alpha.py").string() + " " +
+  const std::string cmd = test::debian_python() + " " +
+                          (test::source_dir() / "tests/tools/png_alpha.py").string() + " " +
                           (dir / "box-sheet-1-part-1.png").string() + " >" + out.string() + " 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(out);
   const std::string result = slurp(out);
@@ -300,7 +297,7 @@ TEST(Bundle, ATexturedTwoSheetBundleHasOnePageInColourWithTheCutLinesOnThePrint)
   const auto report = nlohmann::json::parse(run.out);
   ASSERT_EQ(report["sheet_count"], 2) << "the mesh was meant to take two sheets";
   EXPECT_EQ(folder_files(dir), readme_files(dir / "README.txt"));
-  const bool ezdxf = std::system((python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) == 0;
+  const bool ezdxf = std::system((test::debian_python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) == 0;
   const std::regex svg_size(R"(width="([0-9.]+)mm" height="([0-9.]+)mm")");
   const std::regex media_box(R"(/MediaBox \[ *0 +0 +([0-9.]+) +([0-9.]+) *\])");
   const double pt_per_mm = 72 / 25.4;
@@ -341,9 +338,10 @@ TEST(Bundle, ATexturedTwoSheetBundleHasOnePageInColourWithTheCutLinesOnThePrint)
     EXPECT_EQ(part_files, parts);
     if (ezdxf) {
       const fs::path log = dir.parent_path() / (stem + ".log");
-      const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() +
-                              " " + (dir / (stem + ".svg")).string() + " " +
-                              (dir / (stem + ".dxf")).string() + " >" + log.string() + " 2>&1";
+      const std::string cmd = test::debian_python() + " " +
+                              (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() + " " +
+                              (dir / (stem + ".svg")).string() + " " + (dir / (stem + ".dxf")).string() +
+                              " >" + log.string() + " 2>&1";
       EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(log);
     }
   }

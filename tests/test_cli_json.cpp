@@ -133,6 +133,13 @@ TEST(CliJson, MakeUnfoldInspectAndCutFollowTheScheme) {
   const json unfold =
       expect_scheme(run_foldkit({"unfold", mesh, "-o", (dir / "net.obj").string(), "--json"}), "unfold");
   EXPECT_GE(unfold.value("unfold_s", -1.0), 0.0);
+  EXPECT_FALSE(unfold.contains("part_room_mm")) << "no size, no room";
+  const json parts = expect_scheme(
+      run_foldkit({"unfold", mesh, "--size", "250mm", "-o", (dir / "parts.obj").string(), "--json"}),
+      "unfold");
+  EXPECT_GT(parts.value("scale_mm_per_unit", 0.0), 0.0);
+  ASSERT_EQ(parts["part_room_mm"].size(), 2u);
+  EXPECT_NEAR(parts["part_room_mm"][0].get<double>(), 210 - 2 * 10 - 2 * 8, 2.5) << "A4, margins and borders";
   expect_scheme(run_foldkit({"inspect", mesh, "--json"}), "inspect");
   expect_scheme(run_foldkit({"cut", mesh, "--size", "120mm", "--device", "cameo4", "--dry-run", "--preview",
                              (dir / "c.png").string(), "--json"}),

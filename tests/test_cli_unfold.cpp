@@ -1,17 +1,22 @@
 // `foldkit unfold MESH -o net.obj`: the written net keeps face order, is flat, congruent, unmirrored,
-// grouped by piece with no vertex shared between pieces.
+// grouped by piece with no vertex shared between pieces; with a size, its parts pass the independent net
+// check (tests/tools/net_check.py), which is shown to catch each kind of fault.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
 #include "cmd_make.hpp"
 #include "cmd_unfold.hpp"
+#include "foldkit/error.hpp"
 #include "foldkit/geom/predicates.hpp"
 #include "foldkit/unfold/dual_graph.hpp"
 #include "foldkit/unfold/mesh_io.hpp"
@@ -304,4 +309,192 @@ TEST(CliUnfold, AGapAskedForHoldsEverywhereWhileTheDefaultMayCloseToSaveASheet) 
       EXPECT_FALSE(choose.closer_spacing_mm.has_value()) << line;
     EXPECT_EQ(cli::to_layout_options(options).pack.spacing_mm, line == "--spacing 3" ? 3 : 2) << line;
   }
+}
+
+namespace {
+
+bool have_shapely() {
+  return std::system((test::debian_python() + " -c 'import shapely' >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// tests/tools/net_check.py on a net, with the scale and room `summary` (unfold --json) reports.
+test::CliRun net_check(const fs::path& model, const fs::path& net, const nlohmann::json& summary,
+                       std::vector<std::string> more = {}) {
+  std::vector<std::string> args{model.string(), net.string()};
+  if (summary.contains("scale_mm_per_unit"))
+    args.insert(args.end(), {"--mm-per-unit", number(summary["scale_mm_per_unit"].get<double>()), "--room",
+                             number(summary["part_room_mm"][0].get<double>()) + "x" +
+                                 number(summary["part_room_mm"][1].get<double>())});
+  args.insert(args.end(), more.begin(), more.end());
+  return test::run_python_tool("net_check.py", args);
+}
+
+// `foldkit unfold MODEL --size SIZE --paper A4 -o NET --json`, in process: the summary, or null where
+// a flat face is larger than the room.
+nlohmann::json unfold_parts(const fs::path& model, const std::string& size, const fs::path& net) {
+  cli::UnfoldArgs args;
+  args.mesh = model.string();
+  args.output = net.string();
+  args.json = true;
+  args.quiet = true;
+  args.layout.size = size;
+  args.layout.paper = "A4";
+  try {
+    return nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(args); }));
+  } catch (const LayoutError& e) {
+    EXPECT_NE(std::string(e.what()).find("the largest --size that fits is"), std::string::npos) << e.what();
+    return nullptr;
+  }
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+}  // namespace
+
+// Issue 11: every part still passes the invariants and the independent net check. The checker shares no
+// code with foldkit (it reads the model and the net itself and uses shapely): congruent, unmirrored
+// faces, every flat polygon whole, folds only along real edges, no corner shared between parts, parts
+// connected and overlap-free, each within the room it was cut for.
+TEST(CliUnfold, ThePartsOfEveryLowPolyModelAndOfARealMeshPassTheIndependentNetCheck) {
+  if (!have_shapely()) GTEST_SKIP() << "python3-shapely is not installed (bootstrap installs it)";
+  const fs::path dir = test::temp_dir("cli_net_check");
+  std::vector<fs::path> models;
+  for (const auto& entry : fs::directory_iterator(test::source_dir() / "tests" / "data" / "lowpoly"))
+    if (entry.path().extension() == ".obj") models.push_back(entry.path());
+  std::sort(models.begin(), models.end());
+  models.push_back(test::example_mesh("bob_128.obj"));
+  // The barn at survey coordinates, where a float would move its corners by up to a quarter of a unit
+  // and bend its walls.
+  std::ostringstream survey;
+  survey.precision(17);
+  for (std::istringstream in(test::slurp(test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj"));
+       !in.eof();) {
+    std::string line;
+    std::getline(in, line);
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      double x, y, z;
+      v >> x >> y >> z;
+      line = "v " + number(1.2345 * x + 512345.37) + " " + number(1.2345 * y + 5412345.71) + " " +
+             number(1.2345 * z + 0.13);
+    }
+    survey << line << "\n";
+  }
+  write(dir / "barn_survey.obj", survey.str());
+  models.push_back(dir / "barn_survey.obj");
+  int checked = 0, split = 0;
+  for (const fs::path& model : models)
+    for (const std::string size : {"150", "250"}) {
+      const fs::path net = dir / (model.stem().string() + "-" + size + ".obj");
+      const nlohmann::json summary = unfold_parts(model, size, net);
+      if (summary.is_null()) continue;
+      ASSERT_TRUE(summary.contains("part_room_mm")) << summary.dump();
+      const test::CliRun run = net_check(model, net, summary);
+      EXPECT_EQ(run.exit_code, 0) << model.filename() << " at " << size << " mm:\n" << run.out << run.err;
+      ++checked;
+      split += summary["piece_count"].get<int>() > 1;
+    }
+  EXPECT_GE(checked, 15);
+  EXPECT_GE(split, 12) << "most of these models must be cut into parts to fit A4";
+}
+
+// A checker that cannot fail proves nothing: each kind of fault, put into a good net, is reported.
+TEST(CliUnfold, TheIndependentNetCheckReportsEachKindOfFault) {
+  if (!have_shapely()) GTEST_SKIP() << "python3-shapely is not installed (bootstrap installs it)";
+  const fs::path dir = test::temp_dir("cli_net_faults");
+  const fs::path barn = test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj";
+  const nlohmann::json summary = unfold_parts(barn, "150", dir / "good.obj");
+  ASSERT_FALSE(summary.is_null());
+  ASSERT_EQ(net_check(barn, dir / "good.obj", summary).exit_code, 0);
+  const std::string good = test::slurp(dir / "good.obj");
+  struct Fault {
+    std::string name, net;
+    std::vector<std::string> options;
+    std::string reported;
+  };
+  std::string flipped;  // every vertex's x negated: the net seen from behind
+  {
+    std::istringstream in(good);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("v ", 0) == 0) {
+        std::istringstream v(line.substr(2));
+        double x, y, z;
+        v >> x >> y >> z;
+        line = "v " + number(-x) + " " + number(y) + " " + number(z);
+      }
+      flipped += line + "\n";
+    }
+  }
+  const std::vector<Fault> faults = {
+      {"moved", replaced(good, "v 4 0 0", "v 4.2 0 0"), {}, "not congruent"},
+      {"mirrored", flipped, {}, "mirrored"},
+      {"quad in two", replaced(good, "f 1 2 3 4", "f 1 2 3\nf 1 3 4"), {}, "faces, the model 7 polygons"},
+      {"parts merged", replaced(good, "g piece_1", "g piece_0"), {}, "falls apart"},
+      {"too small a room", good, {"--room", "100x100"}, "does not fit"},
+  };
+  for (const Fault& f : faults) {
+    write(dir / "bad.obj", f.net);
+    nlohmann::json given = summary;
+    if (!f.options.empty()) given.erase("scale_mm_per_unit");
+    std::vector<std::string> options = f.options;
+    if (!f.options.empty())
+      options.insert(options.begin(), {"--mm-per-unit", number(summary["scale_mm_per_unit"].get<double>())});
+    const test::CliRun run = net_check(barn, dir / "bad.obj", given, options);
+    EXPECT_EQ(run.exit_code, 1) << f.name << ":\n" << run.out;
+    EXPECT_NE(run.out.find(f.reported), std::string::npos) << f.name << ":\n" << run.out;
+  }
+}
+
+// The same for an overlap, which no mutation of a real net gives while keeping every face congruent: a
+// fan of triangles around a saddle vertex (more than 360 degrees of corners), unrolled without a cut,
+// comes round onto itself.
+TEST(CliUnfold, TheIndependentNetCheckReportsANetThatOverlapsItself) {
+  if (!have_shapely()) GTEST_SKIP() << "python3-shapely is not installed (bootstrap installs it)";
+  const fs::path dir = test::temp_dir("cli_net_overlap");
+  constexpr int kRim = 12;
+  std::vector<Vec3> rim;
+  for (int i = 0; i < kRim; ++i) {
+    const double a = 2 * std::numbers::pi * i / kRim;
+    rim.push_back({std::cos(a), std::sin(a), 0.8 * std::sin(3 * a)});
+  }
+  std::string model = "v 0 0 0\n", net = "v 0 0 0\n";
+  for (const Vec3& p : rim)
+    model += "v " + number(p.x) + " " + number(p.y) + " " + number(p.z) + "\n";
+  double turned = 0;
+  for (int i = 0; i <= kRim; ++i) {
+    const Vec3& p = rim[i % kRim];
+    if (i > 0) {
+      const Vec3& q = rim[i - 1];
+      turned += std::acos(dot(p, q) / (norm(p) * norm(q)));
+    }
+    net += "v " + number(norm(p) * std::cos(turned)) + " " + number(norm(p) * std::sin(turned)) + " 0\n";
+  }
+  ASSERT_GT(turned, 2 * std::numbers::pi) << "the fan must have more than a full turn of corners";
+  net += "g piece_0\n";
+  for (int i = 0; i < kRim; ++i) {
+    model += "f 1 " + std::to_string(i + 2) + " " + std::to_string((i + 1) % kRim + 2) + "\n";
+    net += "f 1 " + std::to_string(i + 2) + " " + std::to_string(i + 3) + "\n";
+  }
+  write(dir / "fan.obj", model);
+  write(dir / "net.obj", net);
+  const test::CliRun run = net_check(dir / "fan.obj", dir / "net.obj", nullptr);
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("overlap"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("congruent"), std::string::npos) << "every face is congruent: " << run.out;
 }

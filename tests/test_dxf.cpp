@@ -42,13 +42,8 @@ const devices::StrokeFont& font() {
 
 using foldkit::test::slurp;
 
-// Debian's python3 (where python3-ezdxf lives) before whatever python3 the PATH finds first.
-std::string python() {
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
 bool have_ezdxf() {
-  return std::system((python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) == 0;
+  return std::system((test::debian_python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) == 0;
 }
 
 std::string text_of(const std::vector<foldkit::test::DxfGroup>& groups) {
@@ -61,8 +56,9 @@ std::string text_of(const std::vector<foldkit::test::DxfGroup>& groups) {
 // Runs tests/tools/dxf_vs_svg.py on one sheet's pair: its exit code, and what it printed in `log`.
 int check_with_ezdxf(const fs::path& svg, const fs::path& dxf, std::string& log) {
   const fs::path out = dxf.string() + ".log";
-  const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() + " " +
-                          svg.string() + " " + dxf.string() + " >" + out.string() + " 2>&1";
+  const std::string cmd = test::debian_python() + " " +
+                          (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() + " " + svg.string() +
+                          " " + dxf.string() + " >" + out.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   log = slurp(out);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -184,7 +180,7 @@ TEST(Dxf, EachSheetGetsItsOwnFileAndAFailureReplacesNone) {
 }
 
 TEST(Dxf, EzdxfReadsTheSameOutlinesAsTheSvgOnEverySheetOfARealModel) {
-  if (std::system((python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) != 0)
+  if (std::system((test::debian_python() + " -c 'import ezdxf' >/dev/null 2>&1").c_str()) != 0)
     GTEST_SKIP() << "python3-ezdxf is not installed (bootstrap installs it): DXF not checked by ezdxf";
   const fs::path dir = test::temp_dir("dxf-ezdxf");
   const std::string mesh = test::example_mesh("spot_350.obj").string();
@@ -203,8 +199,9 @@ TEST(Dxf, EzdxfReadsTheSameOutlinesAsTheSvgOnEverySheetOfARealModel) {
     if (!fs::exists(svg)) break;
     ASSERT_TRUE(fs::exists(dxf)) << dxf;
     const fs::path log = dir / ("check" + suffix + ".txt");
-    const std::string cmd = python() + " " + (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() +
-                            " " + svg.string() + " " + dxf.string() + " >" + log.string() + " 2>&1";
+    const std::string cmd = test::debian_python() + " " +
+                            (test::source_dir() / "tests/tools/dxf_vs_svg.py").string() + " " + svg.string() +
+                            " " + dxf.string() + " >" + log.string() + " 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(log);
     ++sheets;
   }

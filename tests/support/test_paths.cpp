@@ -81,8 +81,11 @@ CliRun run_foldkit(const std::vector<std::string>& args) {
   return run_foldkit_in({}, args);
 }
 
-CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args) {
-  const fs::path dir = temp_dir("run_foldkit");
+namespace {
+
+// Runs `program` with `args` (each quoted for the shell, so never interpreted), capturing its output.
+CliRun run_program(const fs::path& cwd, const std::string& program, const std::vector<std::string>& args) {
+  const fs::path dir = temp_dir("run_program");
   auto quote = [](const std::string& s) {
     std::string q;
     q.push_back('\'');
@@ -96,7 +99,7 @@ CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args)
     return q;
   };
   std::string cmd = cwd.empty() ? "" : "cd " + quote(cwd.string()) + " && exec ";
-  cmd += quote(foldkit_binary().string());
+  cmd += quote(program);
   for (const auto& a : args) {
     cmd.push_back(' ');
     cmd.append(quote(a));
@@ -114,6 +117,22 @@ CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args)
   r.err = slurp(dir / "err");
   fs::remove_all(dir);
   return r;
+}
+
+}  // namespace
+
+CliRun run_foldkit_in(const fs::path& cwd, const std::vector<std::string>& args) {
+  return run_program(cwd, foldkit_binary().string(), args);
+}
+
+std::string debian_python() {
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+CliRun run_python_tool(const std::string& tool, const std::vector<std::string>& args) {
+  std::vector<std::string> all{(source_dir() / "tests" / "tools" / tool).string()};
+  all.insert(all.end(), args.begin(), args.end());
+  return run_program({}, debian_python(), all);
 }
 
 int count_entries(const std::filesystem::path& dir) {

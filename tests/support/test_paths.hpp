@@ -40,4 +40,9 @@ struct CliRun {
 CliRun run_foldkit(const std::vector<std::string>& args);
 /// As run_foldkit, with `cwd` as the working directory (what a user outside the source tree sees).
 CliRun run_foldkit_in(const std::filesystem::path& cwd, const std::vector<std::string>& args);
+/// Debian's python3 (where python3-ezdxf and python3-shapely live, which bootstrap installs) before
+/// whatever python3 the PATH finds first.
+std::string debian_python();
+/// Runs tests/tools/`tool` (an independent checker in Python) with debian_python() and `args`.
+CliRun run_python_tool(const std::string& tool, const std::vector<std::string>& args);
 }  // namespace foldkit::test
