@@ -63,7 +63,9 @@ std::vector<fs::path> mesh_files(const fs::path& corpus) {
 }
 
 // What `make` does with one unfolding at one size: the parts chosen and laid out (choose_and_note_parts).
-Row run_one(UnfoldRun run, const layout::LayoutOptions& o) {
+Row run_one(UnfoldRun run, const layout::LayoutOptions& asked) {
+  // make's default colour options: a coloured model keeps the gap its bleed needs.
+  const layout::LayoutOptions o = with_bleed_gap(asked, run.loaded.mesh, layout::FillOptions{});
   Row row;
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();

@@ -83,15 +83,17 @@ void run_unfold(UnfoldArgs args) {
     throw Error("--json and the net would both go to standard output (-): choose one", ExitCode::Usage);
   refuse_output_over_inputs("-o", args.output, {args.mesh, args.unfold.cut_file, args.unfold.keep_file});
   finish_unfold_options(args.unfold);
-  const layout::LayoutOptions layout_options = to_layout_options(args.layout);
-  layout::check_options(layout_options);
+  const layout::LayoutOptions asked_layout = to_layout_options(args.layout);
+  layout::check_options(asked_layout);
   ProgressLine line(!args.quiet);
   // The cuts of the parts `make` would print at this size (choose_and_note_parts below).
   UnfoldRun run = load_and_unfold(args.mesh, args.unfold, line,
                                   [&](const unfold::LoadedMesh& loaded, unfold::UnfoldOptions& o) {
-                                    o.cuts = cuts_for_print(loaded.mesh, layout_options, o.cuts);
+                                    o.cuts = cuts_for_print(loaded.mesh, asked_layout, o.cuts);
                                   });
-  // make's default colour options: a coloured model keeps the gap its bleed needs there too.
+  // The parts of make's default colour options: a coloured model keeps the gap its bleed needs.
+  const layout::LayoutOptions layout_options =
+      with_bleed_gap(asked_layout, run.loaded.mesh, layout::FillOptions{});
   const std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(
       run, layout_options,
       bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));

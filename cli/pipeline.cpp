@@ -165,6 +165,14 @@ ChooseOptions bleed_room(ChooseOptions choose, const unfold::Mesh& mesh,
   return choose;
 }
 
+layout::LayoutOptions with_bleed_gap(layout::LayoutOptions o, const unfold::Mesh& mesh,
+                                     const std::optional<layout::FillOptions>& fills) {
+  // Bleed needs its share of the spacing between pieces.
+  if (fills && layout::has_colour(mesh))
+    o.pack.spacing_mm = std::max(o.pack.spacing_mm, layout::fill_spacing_mm(*fills));
+  return o;
+}
+
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
                                const std::optional<layout::FillOptions>& fills,
@@ -187,10 +195,7 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
                                    options.cuts = cuts_for_print(loaded.mesh, layout_options, options.cuts);
                                  });
   const bool coloured = fills && layout::has_colour(run.unfolded.loaded.mesh);
-  // Bleed needs its share of the spacing between pieces.
-  if (coloured)
-    layout_options.pack.spacing_mm =
-        std::max(layout_options.pack.spacing_mm, layout::fill_spacing_mm(*fills));
+  layout_options = with_bleed_gap(std::move(layout_options), run.unfolded.loaded.mesh, fills);
   const int pieces = run.unfolded.result.unfolding.piece_count;
   const std::string laying_out =
       "laying out " + std::to_string(pieces) + (pieces == 1 ? " piece: " : " pieces: ");

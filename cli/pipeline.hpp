@@ -37,6 +37,11 @@ std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
 /// cut lines, where `mesh` prints in colour (nullopt: it prints white).
 ChooseOptions bleed_room(ChooseOptions choose, const unfold::Mesh& mesh,
                          const std::optional<layout::FillOptions>& fills);
+/// `o` with the gap between pieces widened to what the colour `fills` bleed past the cut lines needs,
+/// where `mesh` prints in colour (nullopt: it prints white). What `make` and `cut` lay out with, so what
+/// `unfold --size` and `bench --layout` choose their parts with too.
+layout::LayoutOptions with_bleed_gap(layout::LayoutOptions o, const unfold::Mesh& mesh,
+                                     const std::optional<layout::FillOptions>& fills);
 
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
 /// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
