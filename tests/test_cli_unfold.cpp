@@ -330,15 +330,16 @@ std::string number(double v) {
   return s.str();
 }
 
-// tests/tools/net_check.py on a net, with the scale and room `summary` (unfold --json) reports.
+// tests/tools/net_check.py on a net, with the scale and room `summary` (unfold --json) reports, or
+// another room (WxH in mm) where given.
 test::CliRun net_check(const fs::path& model, const fs::path& net, const nlohmann::json& summary,
-                       std::vector<std::string> more = {}) {
+                       const std::string& room = {}) {
   std::vector<std::string> args{model.string(), net.string()};
   if (summary.contains("scale_mm_per_unit"))
     args.insert(args.end(), {"--mm-per-unit", number(summary["scale_mm_per_unit"].get<double>()), "--room",
-                             number(summary["part_room_mm"][0].get<double>()) + "x" +
-                                 number(summary["part_room_mm"][1].get<double>())});
-  args.insert(args.end(), more.begin(), more.end());
+                             !room.empty() ? room
+                                           : number(summary["part_room_mm"][0].get<double>()) + "x" +
+                                                 number(summary["part_room_mm"][1].get<double>())});
   return test::run_python_tool("net_check.py", args);
 }
 
@@ -371,6 +372,24 @@ void write(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
+// An OBJ's text with every vertex `v x y z` moved by `move`, the rest as it was.
+template <class Move>
+std::string with_vertices_moved(const std::string& obj, Move move) {
+  std::string out;
+  std::istringstream in(obj);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      Vec3 p;
+      v >> p.x >> p.y >> p.z;
+      p = move(p);
+      line = "v " + number(p.x) + " " + number(p.y) + " " + number(p.z);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 // Issue 11: every part still passes the invariants and the independent net check. The checker shares no
@@ -387,22 +406,11 @@ TEST(CliUnfold, ThePartsOfEveryLowPolyModelAndOfARealMeshPassTheIndependentNetCh
   models.push_back(test::example_mesh("bob_128.obj"));
   // The barn at survey coordinates, where a float would move its corners by up to a quarter of a unit
   // and bend its walls.
-  std::ostringstream survey;
-  survey.precision(17);
-  for (std::istringstream in(test::slurp(test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj"));
-       !in.eof();) {
-    std::string line;
-    std::getline(in, line);
-    if (line.rfind("v ", 0) == 0) {
-      std::istringstream v(line.substr(2));
-      double x, y, z;
-      v >> x >> y >> z;
-      line = "v " + number(1.2345 * x + 512345.37) + " " + number(1.2345 * y + 5412345.71) + " " +
-             number(1.2345 * z + 0.13);
-    }
-    survey << line << "\n";
-  }
-  write(dir / "barn_survey.obj", survey.str());
+  const std::string survey = with_vertices_moved(
+      test::slurp(test::source_dir() / "tests" / "data" / "lowpoly" / "barn.obj"), [](Vec3 p) {
+        return p * 1.2345 + Vec3{512345.37, 5412345.71, 0.13};
+      });
+  write(dir / "barn_survey.obj", survey);
   models.push_back(dir / "barn_survey.obj");
   int checked = 0, split = 0;
   for (const fs::path& model : models)
@@ -431,37 +439,21 @@ TEST(CliUnfold, TheIndependentNetCheckReportsEachKindOfFault) {
   const std::string good = test::slurp(dir / "good.obj");
   struct Fault {
     std::string name, net;
-    std::vector<std::string> options;
+    std::string room;  ///< WxH mm in place of the room the parts were cut for, where set
     std::string reported;
   };
-  std::string flipped;  // every vertex's x negated: the net seen from behind
-  {
-    std::istringstream in(good);
-    for (std::string line; std::getline(in, line);) {
-      if (line.rfind("v ", 0) == 0) {
-        std::istringstream v(line.substr(2));
-        double x, y, z;
-        v >> x >> y >> z;
-        line = "v " + number(-x) + " " + number(y) + " " + number(z);
-      }
-      flipped += line + "\n";
-    }
-  }
+  // Every vertex's x negated: the net seen from behind.
+  const std::string flipped = with_vertices_moved(good, [](Vec3 p) { return Vec3{-p.x, p.y, p.z}; });
   const std::vector<Fault> faults = {
       {"moved", replaced(good, "v 4 0 0", "v 4.2 0 0"), {}, "not congruent"},
       {"mirrored", flipped, {}, "mirrored"},
       {"quad in two", replaced(good, "f 1 2 3 4", "f 1 2 3\nf 1 3 4"), {}, "faces, the model 7 polygons"},
       {"parts merged", replaced(good, "g piece_1", "g piece_0"), {}, "falls apart"},
-      {"too small a room", good, {"--room", "100x100"}, "does not fit"},
+      {"too small a room", good, "100x100", "does not fit"},
   };
   for (const Fault& f : faults) {
     write(dir / "bad.obj", f.net);
-    nlohmann::json given = summary;
-    if (!f.options.empty()) given.erase("scale_mm_per_unit");
-    std::vector<std::string> options = f.options;
-    if (!f.options.empty())
-      options.insert(options.begin(), {"--mm-per-unit", number(summary["scale_mm_per_unit"].get<double>())});
-    const test::CliRun run = net_check(barn, dir / "bad.obj", given, options);
+    const test::CliRun run = net_check(barn, dir / "bad.obj", summary, f.room);
     EXPECT_EQ(run.exit_code, 1) << f.name << ":\n" << run.out;
     EXPECT_NE(run.out.find(f.reported), std::string::npos) << f.name << ":\n" << run.out;
   }

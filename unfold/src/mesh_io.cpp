@@ -266,7 +266,7 @@ ObjFacts check_obj_text(const std::string& text, const std::string& name, int fa
     const auto where = [&] { return " (line " + std::to_string(line_no) + ")"; };
     if (tag == "v") {
       ++vertices;
-      Vec3 position;
+      double xyz[3];
       for (int k = 0; k < 3; ++k) {
         const std::string_view tok = next_token(q, eol);
         if (tok.empty())
@@ -282,9 +282,9 @@ ObjFacts check_obj_text(const std::string& text, const std::string& name, int fa
         if (!in_coordinate_range(x))
           throw InputError(name, "vertex " + std::to_string(vertices) + ": coordinate out of range '" +
                                      std::string(tok.substr(0, 32)) + "'" + where());
-        (k == 0 ? position.x : k == 1 ? position.y : position.z) = x;
+        xyz[k] = x;
       }
-      facts.positions.push_back(position);
+      facts.positions.push_back({xyz[0], xyz[1], xyz[2]});
     } else if (tag == "l") {
       read_obj_line_element(q, eol, vertices, name, static_cast<int>(line_no), seams);
     } else {
