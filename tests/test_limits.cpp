@@ -96,6 +96,45 @@ TEST_F(Limits, AConsistentBinaryStlOverTheFaceLimitIsRefusedFromItsHeaderAlone) 
   EXPECT_NE(m.find("20000000 triangles, over the limit of 2000000"), std::string::npos) << m;
 }
 
+// Bytes this process has read so far (Linux: /proc/self/io), to prove a file was refused unread.
+std::uint64_t bytes_read_so_far() {
+  std::ifstream io("/proc/self/io");
+  for (std::string key; io >> key;) {
+    std::uint64_t value = 0;
+    io >> value;
+    if (key == "rchar:") return value;
+  }
+  return 0;
+}
+
+TEST_F(Limits, ABinaryStlWhoseCountDisagreesWithItsSizeIsRefusedFromItsFirstBytes) {
+  // Just under 1 GiB, one triangle declared: reading it whole cost 11 s and 2 GB before the check.
+  const fs::path p = write("liar.stl", binary_stl(1u, 1));
+  fs::resize_file(p, (std::uintmax_t{1} << 30) - 100);  // sparse: no disk space used
+  const std::uint64_t before = bytes_read_so_far();
+  const std::string m = load_error(p);
+  const std::uint64_t read = bytes_read_so_far() - before;
+  EXPECT_NE(m.find("binary STL header says 1 triangles (134 bytes) but the file has 1073741724 bytes"),
+            std::string::npos)
+      << m;
+  if (before == 0) GTEST_SKIP() << "/proc/self/io is not readable here";
+  EXPECT_LT(read, std::uint64_t{1} << 20) << "bytes read before refusing";
+}
+
+TEST_F(Limits, AnAsciiStlIsNotTakenForABinaryOneWhoseCountDisagrees) {
+  const char* corners[] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1"};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::string text = "solid tetrahedron\n";
+  for (const auto& f : faces) {
+    text += " facet normal 0 0 0\n  outer loop\n";
+    for (const int i : f)
+      text += std::string("   vertex ") + corners[i] + "\n";
+    text += "  endloop\n endfacet\n";
+  }
+  text += "endsolid tetrahedron\n";
+  EXPECT_EQ(load_error(write("ascii.stl", text)), "(loaded)");
+}
+
 TEST_F(Limits, AMeshOverTheUnfoldingFaceLimitIsRefusedWithAHintToDecimate) {
   const auto mesh = foldkit::unfold::load_mesh(foldkit::test::example_mesh("spot_128.obj")).mesh;
   foldkit::unfold::UnfoldOptions options;

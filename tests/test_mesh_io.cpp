@@ -3,6 +3,7 @@
 
 #include <iomanip>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -520,14 +521,19 @@ TEST_F(MeshIo, SeamWeldThatWouldMakeAnEdgeNonManifoldIsNotDone) {
 }
 
 // A building placed at its survey coordinates (UTM: 512 km east, 5,412 km north) keeps its shape: read
-// as float, as OpenMesh reads OBJ, every point would move by up to a quarter of a metre, and a 12 m model
-// printed at 150 mm came out with edges up to 4.7 mm off.
-TEST_F(MeshIo, AnObjFarFromTheOriginKeepsEveryCoordinateAsWritten) {
+// as float, as OpenMesh reads OBJ and PLY, every point would move by up to a quarter of a metre, and a
+// 12 m model printed at 150 mm came out with edges up to 4.7 mm off.
+namespace {
+
+std::vector<Vec3> survey_octahedron() {
   const Vec3 survey{512345.37, 5412345.71, 0.13};
   std::vector<Vec3> v;
   for (const Vec3& p : kOctaVertices)
     v.push_back(survey + p * 0.3);
-  const LoadedMesh m = load_mesh(write(dir, "survey.obj", obj(v, polys(kOctaFaces))));
+  return v;
+}
+
+void expect_kept_as_written(const LoadedMesh& m, const std::vector<Vec3>& v) {
   ASSERT_EQ(m.mesh.num_vertices(), 6);
   for (const Vec3& read : m.mesh.vertices) {
     const bool written = std::any_of(
@@ -538,6 +544,63 @@ TEST_F(MeshIo, AnObjFarFromTheOriginKeepsEveryCoordinateAsWritten) {
     const auto c = m.mesh.corners(f);
     for (int i = 0; i < 3; ++i)
       EXPECT_NEAR(norm(c[(i + 1) % 3] - c[i]), 0.3 * std::sqrt(2.0), 1e-8) << "face " << f;
+  }
+}
+
+// A binary PLY of the octahedron whose vertices are doubles, with a `quality` before x so that the
+// coordinates are not the record's first bytes.
+std::string binary_double_ply(const std::vector<Vec3>& v, bool big_endian) {
+  std::string s = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                  " 1.0\nelement vertex 6\nproperty float quality\nproperty double x\nproperty double y\n"
+                  "property double z\nelement face 8\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto put = [&](const void* x, std::size_t n) {
+    std::string b(static_cast<const char*>(x), n);
+    if (big_endian) std::reverse(b.begin(), b.end());
+    s += b;
+  };
+  for (const Vec3& p : v) {
+    const float quality = 0.5f;
+    put(&quality, 4);
+    for (const double x : {p.x, p.y, p.z})
+      put(&x, 8);
+  }
+  for (const auto& t : kOctaFaces) {
+    s.push_back(3);
+    for (const int i : t)
+      put(&i, 4);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_F(MeshIo, AnObjFarFromTheOriginKeepsEveryCoordinateAsWritten) {
+  const std::vector<Vec3> v = survey_octahedron();
+  expect_kept_as_written(load_mesh(write(dir, "survey.obj", obj(v, polys(kOctaFaces)))), v);
+}
+
+TEST_F(MeshIo, APlyFarFromTheOriginKeepsEveryCoordinateAsWrittenInEveryEncoding) {
+  const std::vector<Vec3> v = survey_octahedron();
+  std::ostringstream ascii;
+  ascii << std::setprecision(17)
+        << "ply\nformat ascii 1.0\nelement vertex 6\nproperty float quality\nproperty double x\n"
+           "property double y\nproperty double z\nelement face 8\nproperty list uchar int vertex_indices\n"
+           "end_header\n";
+  for (const Vec3& p : v)
+    ascii << "0.5 " << p.x << " " << p.y << " " << p.z << "\n";
+  for (const auto& t : kOctaFaces)
+    ascii << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  {
+    SCOPED_TRACE("ascii");
+    expect_kept_as_written(load_mesh(write(dir, "survey_ascii.ply", ascii.str())), v);
+  }
+  {
+    SCOPED_TRACE("binary little-endian");
+    expect_kept_as_written(load_mesh(write(dir, "survey_le.ply", binary_double_ply(v, false))), v);
+  }
+  {
+    SCOPED_TRACE("binary big-endian");
+    expect_kept_as_written(load_mesh(write(dir, "survey_be.ply", binary_double_ply(v, true))), v);
   }
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent check of a flat net written by `foldkit unfold MESH -o NET.obj`, against the model file.
 
-usage: net_check.py MODEL.(obj|off) NET.obj [--mm-per-unit S --room WxH] [--flat-angle DEG] [--json]
+usage: net_check.py MODEL.(obj|off|ply) NET.obj [--mm-per-unit S --room WxH] [--flat-angle DEG] [--json]
 
 It shares no code with foldkit: it reads both files itself, uses shapely for the geometry, and holds the
 net to what issue 11 promises of the parts:
@@ -38,7 +38,7 @@ except ImportError:
     sys.exit(77)
 
 RELATIVE_TOLERANCE = 1e-7  # of the model's largest dimension: lengths after long chains of folds
-# foldkit reads an OBJ's coordinates as single-precision floats (as OpenMesh and Blender do) unless that
+# foldkit reads an OBJ's or PLY's coordinates as single-precision floats (as OpenMesh and Blender do) unless that
 # moves some point by more than this share of the model's size; then it takes them as written.
 FLOAT_SHIFT_SHARE = 1e-6
 OVERLAP_SHARE = 1e-12  # of a piece's area: touching along an edge is no overlap, a crossing is
@@ -51,6 +51,9 @@ class Unreadable(Exception):
 
 def read_model(path):
     """Vertices (deduplicated by position: one model vertex per point) and polygons as vertex lists."""
+    if path.lower().endswith(".ply"):
+        with open(path, "rb") as f:
+            return read_ply(f.read())
     text = open(path, encoding="utf-8", errors="replace").read()
     if path.lower().endswith(".off"):
         return read_off(text)
@@ -86,6 +89,63 @@ def read_off(text):
         n = int(words[at])
         faces.append([int(x) for x in words[at + 1:at + 1 + n]])
         at += 1 + n
+    return weld(points, faces)
+
+PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
+             "float": "f", "double": "d", "int8": "b", "uint8": "B", "int16": "h", "uint16": "H",
+             "int32": "i", "uint32": "I", "float32": "f", "float64": "d"}
+
+
+def read_ply(data):
+    """A PLY of vertices (x, y, z among scalar properties) and faces (one index list), ASCII or binary."""
+    end = data.find(b"end_header")
+    if not data.startswith(b"ply") or end < 0:
+        raise Unreadable("not a PLY file")
+    body = data[data.index(b"\n", end) + 1:]
+    fmt, elements = None, []
+    for line in data[:end].decode("ascii", "replace").splitlines()[1:]:
+        w = line.split()
+        if not w or w[0] in ("comment", "obj_info"):
+            continue
+        if w[0] == "format":
+            fmt = w[1]
+        elif w[0] == "element":
+            elements.append((w[1], int(w[2]), []))
+        elif w[0] == "property":
+            elements[-1][2].append(tuple(w[1:]))
+    if fmt == "ascii":
+        return ply_from_values(elements, iter(body.decode("ascii").split()), None)
+    order = "<" if fmt == "binary_little_endian" else ">"
+    return ply_from_values(elements, body, order)
+
+
+def ply_from_values(elements, source, order):
+    """Reads each element's records from an iterator of ASCII words (order None) or from bytes."""
+    at = 0
+
+    def take(kind):
+        nonlocal at
+        if order is None:
+            word = next(source)
+            return float(word) if PLY_TYPES[kind] in "fd" else int(word)
+        size = struct.calcsize(PLY_TYPES[kind])
+        (value,) = struct.unpack_from(order + PLY_TYPES[kind], source, at)
+        at += size
+        return value
+
+    points, faces = [], []
+    for name, count, props in elements:
+        for _ in range(count):
+            record = {}
+            for prop in props:
+                if prop[0] == "list":
+                    record[prop[3]] = [take(prop[2]) for _ in range(take(prop[1]))]
+                else:
+                    record[prop[1]] = take(prop[0])
+            if name == "vertex":
+                points.append((float(record["x"]), float(record["y"]), float(record["z"])))
+            elif name == "face":
+                faces.append(record.get("vertex_indices", record.get("vertex_index")))
     return weld(points, faces)
 
 
@@ -392,7 +452,7 @@ def main():
     try:
         model_points, model_faces = read_model(a.model)
         net_points, net_faces, groups, header = read_net(a.net)
-    except (OSError, ValueError, IndexError, Unreadable) as e:
+    except (OSError, ValueError, IndexError, KeyError, StopIteration, struct.error, Unreadable) as e:
         print(f"{a.net}: cannot read: {e}")
         return 2
     c = Check(model_points, model_faces, net_points, net_faces, groups, header)

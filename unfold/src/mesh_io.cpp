@@ -311,6 +311,25 @@ ObjFacts check_obj_text(const std::string& text, const std::string& name, int fa
   return facts;
 }
 
+// An ASCII STL says "solid" first and holds only printable text; the first 4 KiB decide it (a binary STL's
+// header may say "solid" too, but its triangles soon hold other bytes).
+constexpr std::size_t kStlSniffBytes = 4096;
+
+bool head_may_be_ascii_stl(std::string_view head) {
+  const std::size_t first = head.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return true;  // only blank so far: the rest decides
+  return head.compare(first, 5, "solid") == 0 &&
+         std::all_of(head.begin(), head.begin() + std::min(head.size(), kStlSniffBytes), [](unsigned char c) {
+           return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127);
+         });
+}
+
+InputError stl_count_mismatch(std::uint32_t count, std::uintmax_t size, const std::string& name) {
+  return InputError(name, "binary STL header says " + std::to_string(count) + " triangles (" +
+                              std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
+                              " bytes) but the file has " + std::to_string(size) + " bytes");
+}
+
 // A binary STL is an 80-byte header, a 32-bit triangle count and 50 bytes per triangle: the size must
 // agree with the count, or the reader would run past the end or silently drop triangles.
 bool check_stl(const std::string& bytes, const std::string& name, int face_limit) {
@@ -319,20 +338,12 @@ bool check_stl(const std::string& bytes, const std::string& name, int face_limit
   if (bytes.size() >= 84) {
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, 4);  // little-endian on every platform we build for
-    const std::uint64_t expected = 84 + 50 * static_cast<std::uint64_t>(count);
-    if (expected == bytes.size()) {
+    if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
       check_face_limit(count, face_limit, name);
       return true;
     }
-    const bool looks_ascii =
-        says_solid && bytes.find("facet") != std::string::npos &&
-        std::all_of(
-            bytes.begin(), bytes.begin() + std::min<std::size_t>(bytes.size(), 4096),
-            [](unsigned char c) { return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127); });
-    if (!looks_ascii)
-      throw InputError(name, "binary STL header says " + std::to_string(count) + " triangles (" +
-                                 std::to_string(expected) + " bytes) but the file has " +
-                                 std::to_string(bytes.size()) + " bytes");
+    if (!head_may_be_ascii_stl(bytes) || bytes.find("facet") == std::string::npos)
+      throw stl_count_mismatch(count, bytes.size(), name);
     return false;
   }
   if (!says_solid) throw InputError(name, "too short for a binary STL and not an ASCII STL");
@@ -485,26 +496,41 @@ PlyHeader read_ply_header(const std::string& text, std::size_t end, const std::s
   return h;
 }
 
-void check_ply_header(const std::string& text, const std::string& name, int face_limit) {
+// Where x, y and z stand among a vertex's properties (the header has declared each once).
+std::array<int, 3> ply_xyz_columns(const std::vector<detail::PlyProperty>& vertex_layout) {
+  std::array<int, 3> columns{0, 1, 2};
+  for (std::size_t i = 0; i < vertex_layout.size(); ++i) {
+    const std::string& n = vertex_layout[i].name;
+    if (n.size() == 1 && n[0] >= 'x' && n[0] <= 'z')
+      columns[static_cast<std::size_t>(n[0] - 'x')] = static_cast<int>(i);
+  }
+  return columns;
+}
+
+// The header and body checked before OpenMesh reads them; returns every vertex's x, y and z as written.
+std::vector<Vec3> check_ply_text(const std::string& text, const std::string& name, int face_limit) {
   const std::size_t end = ply_header_end(text, name);
   const PlyHeader h = read_ply_header(text, end, name);
   const bool ascii = h.format == "ascii";
   check_face_limit(h.nf, face_limit, name);
   check_declared_counts(h.nv, h.nf, ascii ? 6 : 12, ascii ? 8 : 13, text.size() - end, name);
+  std::vector<Vec3> written;
   if (ascii) {
     const auto body = text.find('\n', end);
     detail::AsciiBlockOptions block;
     block.exact_vertex_numbers = h.vertex_properties;
     block.exact_face_numbers = h.face_layout.size() == 1;
+    block.xyz_columns = ply_xyz_columns(h.vertex_layout);
     const std::size_t faces_at = detail::read_ascii_vertex_block(
-        text, body == std::string::npos ? text.size() : body + 1, h.nv, name, block);
+        text, body == std::string::npos ? text.size() : body + 1, h.nv, name, block, &written);
     detail::read_ascii_faces(text, faces_at, h.nf, h.nv, name, block);
   } else {
     const std::size_t after = end + std::string("end_header").size();
     const std::size_t body = after + (text[after] == '\r' ? 2 : 1);
     detail::check_binary_ply_body(std::string_view(text).substr(body), h.format == "binary_big_endian",
-                                  h.vertex_layout, h.nv, h.face_layout, h.nf, kMaxCoordinate, name);
+                                  h.vertex_layout, h.nv, h.face_layout, h.nf, kMaxCoordinate, name, &written);
   }
+  return written;
 }
 
 void silence_openmesh() {
@@ -539,17 +565,21 @@ std::string checked_extension(const fs::path& path, const std::string& name) {
   return ext;
 }
 
-// A consistent binary STL states its triangle count up front: refuse one over the limit before reading
-// (and holding) the whole file.
-void refuse_oversized_binary_stl(const fs::path& path, std::uintmax_t size, int face_limit,
+// A binary STL states its triangle count up front: one over the limit, or one whose count disagrees with
+// the file's size and whose first bytes are not ASCII STL, is refused from its first 4 KiB, before the
+// whole file is read (and held: up to 1 GiB).
+void refuse_bad_binary_stl_early(const fs::path& path, std::uintmax_t size, int face_limit,
                                  const std::string& name) {
   if (size < 84) return;
-  std::ifstream head(path, std::ios::binary);
-  char header[84];
-  if (!head.read(header, sizeof header)) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(static_cast<std::size_t>(std::min<std::uintmax_t>(size, kStlSniffBytes)), '\0');
+  if (!in.read(head.data(), static_cast<std::streamsize>(head.size()))) return;
   std::uint32_t count = 0;
-  std::memcpy(&count, header + 80, 4);
-  if (84 + 50 * static_cast<std::uint64_t>(count) == size) check_face_limit(count, face_limit, name);
+  std::memcpy(&count, head.data() + 80, 4);
+  if (84 + 50 * static_cast<std::uint64_t>(count) == size)
+    check_face_limit(count, face_limit, name);
+  else if (!head_may_be_ascii_stl(head))
+    throw stl_count_mismatch(count, size, name);
 }
 
 // What a format's reader hands on to the repairs, besides the soup itself.
@@ -565,9 +595,9 @@ struct FileSoup {
 // the model is read as Blender and every float-based tool read it, and as foldkit always has.
 constexpr double kFloatShiftShare = 1e-6;
 
-// The OBJ's vertices as written (ObjFacts::positions) in place of OpenMesh's single-precision copies,
-// where the narrowing moved a point by more than kFloatShiftShare of the model's size and the two are the
-// same vertices: as many, each the same point once narrowed to float.
+// The vertices as written (an OBJ's `v` lines, a PLY's x, y and z) in place of OpenMesh's single-precision
+// copies, where the narrowing moved a point by more than kFloatShiftShare of the model's size and the two are
+// the same vertices: as many, each the same point once narrowed to float.
 void keep_double_positions(std::vector<Vec3> written, PolygonSoup& soup) {
   if (written.size() != soup.vertices.size() || written.empty()) return;
   const auto narrowed = [](double x) { return static_cast<double>(static_cast<float>(x)); };
@@ -587,7 +617,7 @@ void keep_double_positions(std::vector<Vec3> written, PolygonSoup& soup) {
 // OBJ, STL and PLY through OpenMesh's readers into the soup (their text already checked), with the colours
 // and textures they name.
 void read_with_openmesh(const fs::path& path, const std::string& ext, const std::string& bytes, ObjFacts obj,
-                        FileSoup& out) {
+                        std::vector<Vec3> written, FileSoup& out) {
   const std::string name = path.string();
   silence_openmesh();
   RawColours colours;
@@ -598,7 +628,7 @@ void read_with_openmesh(const fs::path& path, const std::string& ext, const std:
   read_options += OpenMesh::IO::Options::VertexColor;
   if (!OpenMesh::IO::IOManager().read(name, importer, read_options))
     throw InputError(name, "unparsable " + ext.substr(1) + " file");
-  keep_double_positions(std::move(obj.positions), out.soup);
+  keep_double_positions(std::move(written), out.soup);
   // map_Kd names are relative to the MTL file, which mtllib names relative to the OBJ.
   fs::path texture_dir = path.parent_path();
   if (ext == ".obj")
@@ -629,16 +659,18 @@ FileSoup read_file_soup(const fs::path& path, const std::string& ext, const std:
     return out;
   }
   ObjFacts obj;
+  std::vector<Vec3> written;  // the coordinates as the file writes them, where foldkit's own check read them
   if (ext == ".obj") {
     obj = check_obj_text(bytes, name, options.face_limit);
     out.seams = obj.seams;
+    written = std::move(obj.positions);
   } else if (ext == ".stl") {
     if (!check_stl(bytes, name, options.face_limit)) check_ascii_stl_text(bytes, name);
     out.repair.weld_all = true;
   } else {
-    check_ply_header(bytes, name, options.face_limit);
+    written = check_ply_text(bytes, name, options.face_limit);
   }
-  read_with_openmesh(path, ext, bytes, std::move(obj), out);
+  read_with_openmesh(path, ext, bytes, std::move(obj), std::move(written), out);
   return out;
 }
 
@@ -668,7 +700,7 @@ LoadedMesh load_mesh(const fs::path& path, const LoadOptions& options) {
   const std::string name = path.string();
   const std::uintmax_t size = checked_file_size(path, name, options);
   const std::string ext = checked_extension(path, name);
-  if (ext == ".stl") refuse_oversized_binary_stl(path, size, options.face_limit, name);
+  if (ext == ".stl") refuse_bad_binary_stl_early(path, size, options.face_limit, name);
   const std::string bytes = read_all(path, name);
   if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(name, "empty file (only whitespace)");

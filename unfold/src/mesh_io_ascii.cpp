@@ -110,7 +110,8 @@ std::size_t read_ascii_vertex_block(const std::string& text, std::size_t pos, st
       if (!std::isfinite(x)) throw InputError(name, vertex + " has a non-finite coordinate" + where());
       if (!in_coordinate_range(x))
         throw InputError(name, vertex + ": coordinate out of range '" + tok.substr(0, 32) + "'" + where());
-      if (i < 3) xyz[i] = x;
+      for (std::size_t axis = 0; axis < 3; ++axis)
+        if (static_cast<std::size_t>(options.xyz_columns[axis]) == i) xyz[axis] = x;
     }
     const int numbers = static_cast<int>(words.size());
     if (numbers < 3) throw InputError(name, vertex + " has fewer than 3 coordinates" + where());

@@ -2,6 +2,7 @@
 // Internal to unfold/: the checks every reader shares (declared counts against the file's size, the face
 // limit, coordinates a float can hold) and the line-by-line reading of ASCII vertex and face blocks that
 // OFF and ASCII PLY have in common. Messages name the vertex or face and the file's line.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -37,10 +38,12 @@ struct AsciiBlockOptions {
   /// index list: an extra number would be read as the next face's count).
   bool exact_face_numbers = false;
   bool comments = false;  ///< `#` starts a comment to the end of the line (OFF)
+  /// Which numbers of a vertex line are x, y and z: a PLY header may declare other properties first.
+  std::array<int, 3> xyz_columns{0, 1, 2};
 };
 
 /// Reads `vertices` vertex lines from `pos` (blank lines and, for the vertex block, `#` lines skipped);
-/// appends the first three numbers of each to `positions` when given. Returns the position after the
+/// appends the numbers of each in `xyz_columns` to `positions` when given. Returns the position after the
 /// block. Throws InputError(name, …) naming the vertex and line.
 std::size_t read_ascii_vertex_block(const std::string& text, std::size_t pos, std::uint64_t vertices,
                                     const std::string& name, const AsciiBlockOptions& options,

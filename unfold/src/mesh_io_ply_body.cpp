@@ -1,8 +1,10 @@
 #include "mesh_io_ply_body.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include "foldkit/error.hpp"
@@ -46,25 +48,38 @@ double read_real(const char* at, const std::string& type, bool big_endian) {
 }
 
 // OpenMesh narrows every coordinate to float: a double beyond float range becomes infinite there (or,
-// converted by other code, undefined), so it is refused here with the vertex named.
+// converted by other code, undefined), so it is refused here with the vertex named. The coordinates as
+// written are kept for the loader, which restores them where the narrowing moved the model.
 void check_coordinates(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
                        std::uint64_t vertices, std::uint64_t vertex_bytes, double max_coordinate,
-                       const std::string& name) {
-  std::vector<std::pair<std::uint64_t, std::string>> xyz;  // offset in the record, type
+                       const std::string& name, std::vector<Vec3>* positions) {
+  struct Axis {
+    std::uint64_t offset = 0;  ///< in the record
+    std::string type;
+  };
+  std::array<std::optional<Axis>, 3> axes;
   std::uint64_t offset = 0;
   for (const PlyProperty& p : vertex) {
-    if ((p.name == "x" || p.name == "y" || p.name == "z") && !ply_integer_type(p.type))
-      xyz.push_back({offset, p.type});
+    if (p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
+      axes[static_cast<std::size_t>(p.name[0] - 'x')] = Axis{offset, p.type};
     offset += static_cast<std::uint64_t>(ply_type_bytes(p.type));
   }
-  for (std::uint64_t v = 0; v < vertices; ++v)
-    for (const auto& [at, type] : xyz) {
-      const double x = read_real(body.data() + v * vertex_bytes + at, type, big_endian);
-      if (!std::isfinite(x))
+  if (positions) positions->reserve(positions->size() + vertices);
+  for (std::uint64_t v = 0; v < vertices; ++v) {
+    double xyz[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      if (!axes[i]) continue;
+      const char* at = body.data() + v * vertex_bytes + axes[i]->offset;
+      const std::string& type = axes[i]->type;
+      xyz[i] = ply_integer_type(type) ? static_cast<double>(read_integer(at, type, big_endian))
+                                      : read_real(at, type, big_endian);
+      if (!std::isfinite(xyz[i]))
         throw InputError(name, "vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
-      if (std::fabs(x) > max_coordinate)
+      if (std::fabs(xyz[i]) > max_coordinate)
         throw InputError(name, "vertex " + std::to_string(v + 1) + ": coordinate out of range");
     }
+    if (positions) positions->push_back({xyz[0], xyz[1], xyz[2]});
+  }
 }
 
 }  // namespace
@@ -86,7 +101,7 @@ int ply_type_bytes(const std::string& type) {
 
 void check_binary_ply_body(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
                            std::uint64_t vertices, const std::vector<PlyProperty>& face, std::uint64_t faces,
-                           double max_coordinate, const std::string& name) {
+                           double max_coordinate, const std::string& name, std::vector<Vec3>* positions) {
   std::uint64_t vertex_bytes = 0;
   for (const PlyProperty& p : vertex)
     vertex_bytes += static_cast<std::uint64_t>(ply_type_bytes(p.type));
@@ -95,7 +110,7 @@ void check_binary_ply_body(std::string_view body, bool big_endian, const std::ve
     throw InputError(name, "truncated file: the header declares " + std::to_string(vertices) +
                                " vertices of " + std::to_string(vertex_bytes) + " bytes, the body has " +
                                std::to_string(size) + " bytes");
-  check_coordinates(body, big_endian, vertex, vertices, vertex_bytes, max_coordinate, name);
+  check_coordinates(body, big_endian, vertex, vertices, vertex_bytes, max_coordinate, name, positions);
   std::uint64_t at = vertices * vertex_bytes;
   const auto truncated = [&](std::uint64_t f) {
     return InputError(name, "truncated file: face " + std::to_string(f + 1) + " of " + std::to_string(faces) +

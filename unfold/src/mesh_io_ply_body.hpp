@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "foldkit/geom/vec.hpp"
+
 namespace foldkit::unfold::detail {
 
 /// One property of a PLY element as its header declares it.
@@ -25,9 +27,11 @@ bool ply_integer_type(const std::string& type);
 /// Walks the binary body (the bytes after the end_header line): `vertices` records of `vertex` whose x,
 /// y and z are finite and within `max_coordinate`, then `faces` records of `face` whose list holds 3 or
 /// more indices below `vertices`. Throws InputError(name, …) naming the first vertex or face that is
-/// malformed or runs past the end of the file.
+/// malformed or runs past the end of the file. Appends each vertex's x, y and z, as written, to
+/// `positions` when given.
 void check_binary_ply_body(std::string_view body, bool big_endian, const std::vector<PlyProperty>& vertex,
                            std::uint64_t vertices, const std::vector<PlyProperty>& face, std::uint64_t faces,
-                           double max_coordinate, const std::string& name);
+                           double max_coordinate, const std::string& name,
+                           std::vector<Vec3>* positions = nullptr);
 
 }  // namespace foldkit::unfold::detail
