@@ -1,11 +1,13 @@
 #include "choose_parts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -70,9 +72,10 @@ bool same_parts(const unfold::Unfolding& a, const unfold::Unfolding& b) {
 
 struct Candidate {
   unfold::PartsResult parts;
-  long sheets = 0;                ///< by the estimate until `layout` is set, then by the layout
-  long estimated_sheets = 0;      ///< by the estimate, 0 before it
-  int estimated_without_tab = 0;  ///< seams without a glue tab, by the estimate
+  long sheets = 0;                            ///< by the estimate until `layout` is set, then by the layout
+  long estimated_sheets = 0;                  ///< by the estimate, 0 before it
+  int estimated_without_tab = 0;              ///< seams without a glue tab, by the estimate
+  std::vector<int> estimated_sheet_of_piece;  ///< by the estimate, empty before it
   double hull_area = 0;
   bool patches = false;  ///< grown over the surface, not cut from the unfolding's pieces
   std::optional<layout::LayoutResult> layout;
@@ -205,6 +208,9 @@ class PartChooser {
     const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough_, ++layouts_));
     c.sheets = c.estimated_sheets = sheets_with_pieces(r);
     c.estimated_without_tab = r.overall.dropped_tabs;
+    c.estimated_sheet_of_piece.clear();
+    for (const layout::PiecePlacement& p : r.placements)
+      c.estimated_sheet_of_piece.push_back(p.sheet);
     return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   }
 
@@ -669,11 +675,68 @@ void open_slits_between_parts(const unfold::Mesh& mesh, const layout::LayoutOpti
   if (kept) best = std::move(*kept);
 }
 
+// Pairs of parts that share a glued seam and, by `sheet_of_piece`, a sheet: the smallest pairs (by faces)
+// first, as join_parts takes them.
+std::vector<std::array<int, 2>> neighbours_on_a_sheet(const unfold::Unfolding& u,
+                                                      const std::vector<int>& sheet_of_piece) {
+  std::set<std::array<int, 2>> seen;
+  for (const unfold::UnfoldEdge& e : u.edges) {
+    if (!e.glued_seam()) continue;
+    const int a = u.piece_of_face[e.face[0]], b = u.piece_of_face[e.face[1]];
+    if (a == b || sheet_of_piece.at(a) != sheet_of_piece.at(b)) continue;
+    seen.insert({std::min(a, b), std::max(a, b)});
+  }
+  std::vector<int> faces(u.piece_count, 0);
+  for (const int p : u.piece_of_face)
+    ++faces[p];
+  std::vector<std::array<int, 2>> pairs(seen.begin(), seen.end());
+  std::stable_sort(pairs.begin(), pairs.end(), [&](const auto& x, const auto& y) {
+    return faces[x[0]] + faces[x[1]] < faces[y[0]] + faces[y[1]];
+  });
+  return pairs;
+}
+
+// Where the joins in join_parts' order cost a sheet from the first, another pair may not: joined two at
+// a time, each pair of parts on one sheet in turn (smallest first), the first join whose estimate keeps
+// the sheets kept, until none does or kMostJoinTrials estimates are spent. lowpoly/cube at 80 mm fitted
+// one sheet as six loose squares: its first join took a second sheet by the estimate, other pairs do not.
+std::optional<Candidate> joined_two_at_a_time(const unfold::Mesh& mesh, const unfold::PartOptions& whole_room,
+                                              const layout::LayoutOptions& o, PartChooser& chooser,
+                                              const Candidate& best) {
+  constexpr int kMostJoinTrials = 12;
+  constexpr int kMostParts = 24;  // beyond, each estimate costs more and the order above finds most joins
+  if (best.parts.unfolding.piece_count > kMostParts) return std::nullopt;
+  std::optional<Candidate> kept;
+  std::vector<int> sheet_of_piece;
+  for (const layout::PiecePlacement& p : best.layout->placements)
+    sheet_of_piece.push_back(p.sheet);
+  const Candidate* from = &best;
+  int trials = 0;
+  for (bool joined = true; joined && trials < kMostJoinTrials;) {
+    joined = false;
+    for (const auto& [a, b] : neighbours_on_a_sheet(from->parts.unfolding, sheet_of_piece)) {
+      if (trials >= kMostJoinTrials || (o.deadline && std::chrono::steady_clock::now() > *o.deadline)) break;
+      const auto only = [a = a, b = b](int x, int y) { return std::min(x, y) == a && std::max(x, y) == b; };
+      Candidate c = derived_from(*from, unfold::join_parts(mesh, from->parts.unfolding, whole_room, only, 1));
+      if (c.parts.unfolding.piece_count == from->parts.unfolding.piece_count) continue;
+      ++trials;
+      chooser.estimate(c);
+      if (c.sheets > best.sheets) continue;
+      sheet_of_piece = c.estimated_sheet_of_piece;
+      kept = std::move(c);
+      from = &*kept;
+      joined = true;
+      break;
+    }
+  }
+  return kept;
+}
+
 // Parts that share a sheet, joined back along seams between them (unfold::join_parts), the smallest
 // pairs first: joined they are fewer seams to match across parts. All the joins the room allows often
 // need another sheet; then the most joins that keep the sheets (by the estimate) are searched for by
-// halving. Kept when the full layout takes no more sheets and leaves no more labels unclear and no more
-// seams without a tab.
+// halving, and where even the first join costs a sheet, pairs are joined two at a time. Kept when the
+// full layout takes no more sheets and leaves no more labels unclear and no more seams without a tab.
 void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions& o, PartChooser& chooser,
                            Candidate& best) {
   constexpr int kSearchSteps = 4;  // estimates after the first: joins found within 1/16 of all
@@ -708,6 +771,7 @@ void join_parts_on_a_sheet(const unfold::Mesh& mesh, const layout::LayoutOptions
         costly = middle;
       }
     }
+    if (!kept) kept = joined_two_at_a_time(mesh, whole_room, o, chooser, best);
   }
   if (!kept) return;
   chooser.lay_out(*kept);

@@ -259,6 +259,25 @@ TEST(ChooseParts, PartsSharingASheetAreJoinedIntoFewerWithoutCostingASheet) {
     }
 }
 
+TEST(ChooseParts, WhereTheFirstJoinCostsASheetOtherPairsOnTheSheetAreJoinedTwoAtATime) {
+  // An 80 mm cube on A4: six squares fit one sheet, but joining the first pair join_parts takes (any two
+  // squares, tabs planned as they fall) took a second sheet by the estimate, so the cube printed as six
+  // loose squares with a tab on every one of its 12 seams.
+  const LowPoly cube = unfolded_low_poly("cube.obj");
+  layout::LayoutOptions o;
+  o.size_mm = 80;
+  const cli::ChosenParts split = cli::choose_parts(cube.mesh, cube.unfolding, o, {}, as_split());
+  const cli::ChosenParts joined = cli::choose_parts(cube.mesh, cube.unfolding, o);
+  ASSERT_TRUE(split.layout && joined.layout);
+  EXPECT_EQ(sheets_with_pieces(*split.layout), 1);
+  EXPECT_EQ(sheets_with_pieces(*joined.layout), 1);
+  EXPECT_EQ(split.unfolding.piece_count, 6) << "the partition as split: one square a part";
+  EXPECT_LE(joined.unfolding.piece_count, 2);
+  EXPECT_EQ(joined.layout->overall.dropped_tabs, 0);
+  EXPECT_LE(joined.layout->overall.tabs, 8) << "a seam joined is a tab fewer to glue";
+  EXPECT_EQ(unfold::check_unfolding(cube.mesh, joined.unfolding), std::vector<std::string>{});
+}
+
 TEST(ChooseParts, FitModeAndNoSplitLeaveTheUnfoldingAlone) {
   const auto& ex = test::unfolded_example("spot_350.obj", unfold::Method::Search);
   layout::LayoutOptions o;
