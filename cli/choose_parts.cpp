@@ -696,26 +696,37 @@ std::vector<std::array<int, 2>> neighbours_on_a_sheet(const unfold::Unfolding& u
   return pairs;
 }
 
+// How many estimates joined_two_at_a_time may spend on a mesh of `faces` faces: an estimate costs about
+// as much as the mesh is large. Over `bench --layout` every join kept came within the first 3 estimates
+// on 350-500 faces (bob_350, goathead_350 at 250 mm, elephant_500 at 150 mm) and within 11 on 128; the
+// later ones on 350 faces cost rocker_arm_350 at 150 mm and plane_350 at 250 mm 2.8 and 4.6 s of CPU
+// (3.5 -> 6.3, 7.6 -> 12.2 s) for joins the full layout then refused.
+int join_trials_for(int faces) {
+  constexpr int kMostJoinTrials = 12;
+  constexpr int kJoinTrialFaces = 1600;  // faces times estimates
+  return std::clamp(kJoinTrialFaces / std::max(faces, 1), 1, kMostJoinTrials);
+}
+
 // Where the joins in join_parts' order cost a sheet from the first, another pair may not: joined two at
 // a time, each pair of parts on one sheet in turn (smallest first), the first join whose estimate keeps
-// the sheets kept, until none does or kMostJoinTrials estimates are spent. lowpoly/cube at 80 mm fitted
-// one sheet as six loose squares: its first join took a second sheet by the estimate, other pairs do not.
+// the sheets kept, until none does or join_trials_for(faces) estimates are spent. lowpoly/cube at 80 mm
+// fitted one sheet as six loose squares: its first join took a second sheet by the estimate, others do not.
 std::optional<Candidate> joined_two_at_a_time(const unfold::Mesh& mesh, const unfold::PartOptions& whole_room,
                                               const layout::LayoutOptions& o, PartChooser& chooser,
                                               const Candidate& best) {
-  constexpr int kMostJoinTrials = 12;
   constexpr int kMostParts = 24;  // beyond, each estimate costs more and the order above finds most joins
   if (best.parts.unfolding.piece_count > kMostParts) return std::nullopt;
+  const int most_trials = join_trials_for(mesh.num_faces());
   std::optional<Candidate> kept;
   std::vector<int> sheet_of_piece;
   for (const layout::PiecePlacement& p : best.layout->placements)
     sheet_of_piece.push_back(p.sheet);
   const Candidate* from = &best;
   int trials = 0;
-  for (bool joined = true; joined && trials < kMostJoinTrials;) {
+  for (bool joined = true; joined && trials < most_trials;) {
     joined = false;
     for (const auto& [a, b] : neighbours_on_a_sheet(from->parts.unfolding, sheet_of_piece)) {
-      if (trials >= kMostJoinTrials || (o.deadline && std::chrono::steady_clock::now() > *o.deadline)) break;
+      if (trials >= most_trials || (o.deadline && std::chrono::steady_clock::now() > *o.deadline)) break;
       const auto only = [a = a, b = b](int x, int y) { return std::min(x, y) == a && std::max(x, y) == b; };
       Candidate c = derived_from(*from, unfold::join_parts(mesh, from->parts.unfolding, whole_room, only, 1));
       if (c.parts.unfolding.piece_count == from->parts.unfolding.piece_count) continue;
