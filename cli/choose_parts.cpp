@@ -70,6 +70,15 @@ bool same_parts(const unfold::Unfolding& a, const unfold::Unfolding& b) {
   return true;
 }
 
+// The sheet each piece of a layout went to.
+std::vector<int> sheet_of_each_piece(const layout::LayoutResult& r) {
+  std::vector<int> sheets;
+  sheets.reserve(r.placements.size());
+  for (const layout::PiecePlacement& p : r.placements)
+    sheets.push_back(p.sheet);
+  return sheets;
+}
+
 struct Candidate {
   unfold::PartsResult parts;
   long sheets = 0;                            ///< by the estimate until `layout` is set, then by the layout
@@ -208,9 +217,7 @@ class PartChooser {
     const layout::LayoutResult r = layout::layout_sheets(c.parts.unfolding, numbered(rough_, ++layouts_));
     c.sheets = c.estimated_sheets = sheets_with_pieces(r);
     c.estimated_without_tab = r.overall.dropped_tabs;
-    c.estimated_sheet_of_piece.clear();
-    for (const layout::PiecePlacement& p : r.placements)
-      c.estimated_sheet_of_piece.push_back(p.sheet);
+    c.estimated_sheet_of_piece = sheet_of_each_piece(r);
     return r.overall.piece_area_mm2 + r.overall.tab_area_mm2;
   }
 
@@ -718,9 +725,7 @@ std::optional<Candidate> joined_two_at_a_time(const unfold::Mesh& mesh, const un
   if (best.parts.unfolding.piece_count > kMostParts) return std::nullopt;
   const int most_trials = join_trials_for(mesh.num_faces());
   std::optional<Candidate> kept;
-  std::vector<int> sheet_of_piece;
-  for (const layout::PiecePlacement& p : best.layout->placements)
-    sheet_of_piece.push_back(p.sheet);
+  std::vector<int> sheet_of_piece = sheet_of_each_piece(*best.layout);
   const Candidate* from = &best;
   int trials = 0;
   for (bool joined = true; joined && trials < most_trials;) {

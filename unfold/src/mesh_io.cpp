@@ -452,7 +452,7 @@ void read_ply_property(const std::vector<std::string>& w, const std::string& whe
     h.face_list = true;
     h.face_layout.push_back({w[3], w[2], w[4]});
   } else if (w.size() == 3 && is_ply_type(w[1])) {
-    if (h.element == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z")) ++h.xyz;
+    if (h.element == "vertex" && detail::ply_axis(w[2]) >= 0) ++h.xyz;
     if (h.element == "vertex") ++h.vertex_properties;
     (h.element == "vertex" ? h.vertex_layout : h.face_layout).push_back({w[1], "", w[2]});
   } else {
@@ -499,11 +499,9 @@ PlyHeader read_ply_header(const std::string& text, std::size_t end, const std::s
 // Where x, y and z stand among a vertex's properties (the header has declared each once).
 std::array<int, 3> ply_xyz_columns(const std::vector<detail::PlyProperty>& vertex_layout) {
   std::array<int, 3> columns{0, 1, 2};
-  for (std::size_t i = 0; i < vertex_layout.size(); ++i) {
-    const std::string& n = vertex_layout[i].name;
-    if (n.size() == 1 && n[0] >= 'x' && n[0] <= 'z')
-      columns[static_cast<std::size_t>(n[0] - 'x')] = static_cast<int>(i);
-  }
+  for (std::size_t i = 0; i < vertex_layout.size(); ++i)
+    if (const int axis = detail::ply_axis(vertex_layout[i].name); axis >= 0)
+      columns[static_cast<std::size_t>(axis)] = static_cast<int>(i);
   return columns;
 }
 

@@ -60,8 +60,8 @@ void check_coordinates(std::string_view body, bool big_endian, const std::vector
   std::array<std::optional<Axis>, 3> axes;
   std::uint64_t offset = 0;
   for (const PlyProperty& p : vertex) {
-    if (p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
-      axes[static_cast<std::size_t>(p.name[0] - 'x')] = Axis{offset, p.type};
+    if (const int axis = ply_axis(p.name); axis >= 0)
+      axes[static_cast<std::size_t>(axis)] = Axis{offset, p.type};
     offset += static_cast<std::uint64_t>(ply_type_bytes(p.type));
   }
   if (positions) positions->reserve(positions->size() + vertices);
@@ -83,6 +83,10 @@ void check_coordinates(std::string_view body, bool big_endian, const std::vector
 }
 
 }  // namespace
+
+int ply_axis(const std::string& name) {
+  return name.size() == 1 && name[0] >= 'x' && name[0] <= 'z' ? name[0] - 'x' : -1;
+}
 
 bool ply_integer_type(const std::string& type) {
   return ply_type_bytes(type) > 0 && type != "float" && type != "float32" && type != "double" &&

@@ -21,6 +21,9 @@ struct PlyProperty {
 /// Byte size of a PLY scalar type name ("uchar", "float32", …); 0 for an unknown name.
 int ply_type_bytes(const std::string& type);
 
+/// 0, 1 or 2 for a vertex property named x, y or z; -1 for any other.
+int ply_axis(const std::string& name);
+
 /// True for the integer types, the only ones a list count or a vertex index may have.
 bool ply_integer_type(const std::string& type);
 
