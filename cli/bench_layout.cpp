@@ -7,12 +7,14 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <regex>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bench_before.hpp"
 #include "choose_parts.hpp"
 #include "foldkit/error.hpp"
 #include "foldkit/layout/layout.hpp"
@@ -48,6 +50,7 @@ struct Row {
   double cpu_seconds = 0;  ///< process CPU time: the machine may be shared, the wall clock then lies
   /// What unfold::check_unfolding finds wrong with the parts (congruence, overlap, partners): none.
   std::vector<std::string> part_problems;
+  const BeforeRun* before = nullptr;  ///< the same run measured before a change, if given
 };
 
 std::vector<fs::path> mesh_files(const fs::path& corpus) {
@@ -100,12 +103,17 @@ Row run_one(UnfoldRun run, const layout::LayoutOptions& asked) {
 }
 
 void print_row(const Row& row) {
-  if (!row.error.empty())
+  if (!row.error.empty()) {
     std::printf("%-28s %5d %5.0f | error: %s\n", row.mesh.c_str(), row.faces, row.size_mm, row.error.c_str());
-  else
-    std::printf("%-28s %5d %5.0f | %6ld %5ld %5ld %6ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f\n", row.mesh.c_str(),
+  } else {
+    std::printf("%-28s %5d %5.0f | %6ld %5ld %5ld %6ld %5d %7.0f%% %3d/%-3d %7.2f %7.2f", row.mesh.c_str(),
                 row.faces, row.size_mm, row.sheets, row.bound, row.shape_bound, row.spaced_bound, row.parts,
                 100 * row.coverage, row.no_tab, row.seams, row.seconds, row.cpu_seconds);
+    if (const BeforeRun* b = row.before)
+      std::printf(" | %6ld %5ld %5ld %7.0f%% %3ld/%-3ld %7.2f", b->sheets, b->area_bound, b->parts,
+                  100 * b->coverage, b->seams_without_tab, b->seams, b->wall_s);
+    std::printf("\n");
+  }
   if (!row.part_problems.empty())
     std::printf("  parts fail the unfolding checks: %s\n", row.part_problems.front().c_str());
   std::fflush(stdout);
@@ -113,7 +121,8 @@ void print_row(const Row& row) {
 
 // One mesh file: unfolded once, laid out at every size (rows printed as they finish unless JSON). Nothing
 // for a file that does not load or lies outside the face bounds.
-void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std::vector<Row>& rows) {
+void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, const BeforeRuns* before,
+                std::vector<Row>& rows) {
   unfold::LoadedMesh loaded;
   try {
     loaded = unfold::load_mesh(file);
@@ -138,6 +147,7 @@ void bench_file(const LayoutBenchArgs& a, const fs::path& file, Vec2 paper, std:
     row.mesh = name;
     row.faces = loaded.mesh.num_faces();
     row.size_mm = size;
+    if (before) row.before = before->find(name, size);
     if (!a.json_out) print_row(row);
     rows.push_back(std::move(row));
   }
@@ -216,6 +226,76 @@ Fills fills(const Totals& t) {
           fill_for_median_coverage(t.filled, kMedianCoverageTarget)};
 }
 
+// The runs measured both times: as measured now, and as the report before recorded them (its bounds of
+// shapes and gaps unknown, so taken as the area bound).
+struct SharedRuns {
+  std::vector<Row> now, before;
+};
+
+SharedRuns shared_runs(const std::vector<Row>& rows) {
+  SharedRuns shared;
+  for (const Row& r : rows) {
+    if (!r.error.empty() || r.before == nullptr) continue;
+    shared.now.push_back(r);
+    Row b;
+    b.mesh = r.mesh;
+    b.faces = r.faces;
+    b.size_mm = r.size_mm;
+    b.sheets = r.before->sheets;
+    b.bound = r.before->area_bound;
+    b.parts = static_cast<int>(r.before->parts);
+    b.seams = static_cast<int>(r.before->seams);
+    b.no_tab = static_cast<int>(r.before->seams_without_tab);
+    b.coverage = r.before->coverage;
+    b.seconds = r.before->wall_s;
+    shared.before.push_back(std::move(b));
+  }
+  return shared;
+}
+
+long total_parts(const std::vector<Row>& rows) {
+  long parts = 0;
+  for (const Row& r : rows)
+    parts += r.parts;
+  return parts;
+}
+
+// The totals both measurements are compared by, over the runs they share.
+json compared_json(const std::vector<Row>& rows) {
+  const Totals t = totals(rows);
+  return {{"run_count", rows.size()},
+          {"sheet_count", t.sheets},
+          {"area_bound_sheet_count", t.bound},
+          {"sheets_over_bound_ratio", t.ratio()},
+          {"runs_more_than_one_over_count", t.over},
+          {"part_count", total_parts(rows)},
+          {"median_coverage", median(t.coverage)},
+          {"seams_without_tab_fraction", t.share()},
+          {"wall_s", t.seconds}};
+}
+
+std::string compared_text(const std::vector<Row>& rows) {
+  const Totals t = totals(rows);
+  char no_tab[96] = "(no run of 350-1,000 faces at 150 mm)";
+  if (t.mid_seams > 0)
+    std::snprintf(no_tab, sizeof no_tab, "%ld/%ld (%.1f%%)", t.mid_no_tab, t.mid_seams, 100 * t.share());
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "%ld sheets, area bound %ld (x%.2f), %ld runs more than one sheet over, %ld parts, median "
+                "coverage %.1f%%, seams without a tab %s, layout %.1f s wall",
+                t.sheets, t.bound, t.ratio(), t.over, total_parts(rows), 100 * median(t.coverage), no_tab,
+                t.seconds);
+  return line;
+}
+
+void print_compared(const std::vector<Row>& rows, const BeforeRuns& before) {
+  const SharedRuns shared = shared_runs(rows);
+  std::printf("before (%s), on the %zu runs measured both times:\n", before.file.c_str(), shared.now.size());
+  if (shared.now.empty()) return;
+  std::printf("  before: %s\n  now:    %s\n", compared_text(shared.before).c_str(),
+              compared_text(shared.now).c_str());
+}
+
 json bench_json(const std::vector<Row>& rows, const Totals& t) {
   json out{{"rows", json::array()}};
   for (const Row& r : rows) {
@@ -237,6 +317,11 @@ json bench_json(const std::vector<Row>& rows, const Totals& t) {
                 {"seam_count", r.seams},
                 {"seams_without_tab_count", r.no_tab},
                 {"part_problems", r.part_problems}});
+      if (const BeforeRun* b = r.before)
+        j["before"] = {{"sheet_count", b->sheets}, {"area_bound_sheet_count", b->area_bound},
+                       {"part_count", b->parts},   {"coverage", b->coverage},
+                       {"seam_count", b->seams},   {"seams_without_tab_count", b->seams_without_tab},
+                       {"wall_s", b->wall_s}};
     }
     out["rows"].push_back(j);
   }
@@ -307,21 +392,37 @@ void run_layout_bench(const LayoutBenchArgs& a) {
   if (!fs::is_directory(corpus)) throw InputError(corpus.string(), "no such folder of meshes");
   const auto paper = layout::parse_paper(a.paper);
   if (!paper) throw Error("--paper: unknown paper '" + a.paper + "'", ExitCode::Usage);
-  if (!a.json_out)
+  // Read first: a report that is not one must not cost a whole benchmark.
+  std::optional<BeforeRuns> before;
+  if (!a.before.empty()) before = read_before_runs(a.before);
+  if (!a.json_out) {
     std::printf(
         "foldkit bench --layout: %s, %d-%d faces, %s, search unfolding (seed 1)\n%-28s %5s %5s | %6s %5s %5s "
-        "%6s %5s %8s %7s %7s %7s\n",
+        "%6s %5s %8s %7s %7s %7s",
         corpus.string().c_str(), a.min_faces, a.max_faces, a.paper.c_str(), "mesh", "faces", "size", "sheets",
         "area", "shape", "spaced", "parts", "coverage", "no tab", "s", "cpu s");
+    if (before)
+      std::printf(" | %6s %5s %5s %8s %7s %7s", "before", "area", "parts", "coverage", "no tab", "s");
+    std::printf("\n");
+  }
   std::vector<Row> rows;
   for (const fs::path& file : mesh_files(corpus))
     if (a.filter.empty() || file.filename().string().find(a.filter) != std::string::npos)
-      bench_file(a, file, *paper, rows);
+      bench_file(a, file, *paper, before ? &*before : nullptr, rows);
   const Totals t = totals(rows);
-  if (a.json_out)
-    std::cout << versioned(bench_json(rows, t)).dump(2) << "\n";
-  else
+  if (a.json_out) {
+    json out = bench_json(rows, t);
+    if (before) {
+      const SharedRuns shared = shared_runs(rows);
+      out["before"] = {{"file", before->file},
+                       {"totals", compared_json(shared.before)},
+                       {"now_totals", compared_json(shared.now)}};
+    }
+    std::cout << versioned(out).dump(2) << "\n";
+  } else {
     print_totals(rows, t);
+    if (before) print_compared(rows, *before);
+  }
 }
 
 }  // namespace foldkit::cli

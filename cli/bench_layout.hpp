@@ -16,10 +16,13 @@ struct LayoutBenchArgs {
   double time_limit_s = 60;  ///< for the unfolding of each mesh
   bool json_out = false;
   bool nest2d = false;  ///< pack with libnest2d instead of the raster packer (the comparison)
+  /// A `bench --layout --json` report measured before a change: its figures are printed beside the
+  /// runs measured now, and both totalled over the runs they share. Empty: none.
+  std::string before;
 };
 
 /// Runs the layout benchmark and prints the table (or JSON) on stdout. Throws InputError when the corpus
-/// directory is missing.
+/// directory is missing or the report of the runs before is not one (before any run).
 void run_layout_bench(const LayoutBenchArgs& args);
 
 }  // namespace foldkit::cli

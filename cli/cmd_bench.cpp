@@ -378,6 +378,15 @@ fs::path corpus_folder(const std::string& given) {
   throw InputError(corpus.string(), "no such folder of meshes");
 }
 
+// The report of the runs before a change: the one given, none for "none", else the figures measured
+// before the layout's issue 11 where a developer checkout has them (bench/layout-before.json).
+std::string before_report(const std::string& given) {
+  if (given == "none") return {};
+  if (!given.empty()) return given;
+  const fs::path checked_in = "bench/layout-before.json";
+  return fs::is_regular_file(checked_in) ? checked_in.string() : std::string();
+}
+
 }  // namespace
 
 void run_bench(const BenchArgs& a) {
@@ -392,6 +401,7 @@ void run_bench(const BenchArgs& a) {
   if (a.time_limit_given) l.time_limit_s = a.time_limit_s;
   l.json_out = a.json_out;
   l.nest2d = a.nest2d;
+  l.before = before_report(a.before);
   if (!a.sizes_mm.empty()) l.sizes_mm = a.sizes_mm;
   run_layout_bench(l);
 }
@@ -424,6 +434,10 @@ void setup_bench(CLI::App& app) {
       ->delimiter(',')
       ->check(number_in(1, 10000, "mm"));
   cmd->add_flag("--nest2d", a->nest2d, "With --layout: pack with libnest2d instead of foldkit's packer");
+  cmd->add_option("--before", a->before,
+                  "With --layout: a report of bench --layout --json measured before a change, printed beside "
+                  "the runs and totalled over the runs both share (default bench/layout-before.json when run "
+                  "from a developer checkout; none: no such columns)");
   // Internal: what each child process runs.
   cmd->add_option("--one", a->one)->group("");
   cmd->add_option("--method", a->method)->group("");

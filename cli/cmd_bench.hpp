@@ -25,6 +25,7 @@ struct BenchArgs {
   bool layout = false;           ///< --layout: the layout table instead
   std::vector<double> sizes_mm;  ///< with --layout; empty: its default
   bool nest2d = false;           ///< with --layout: pack with libnest2d
+  std::string before;            ///< with --layout: the report before a change ("none": none; empty: default)
   // Child mode: unfold one mesh with one method and print one JSON line.
   std::string one;
   std::string method;
