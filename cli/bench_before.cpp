@@ -41,7 +41,7 @@ double figure(const json& row, const char* key, std::size_t index, const fs::pat
 
 long count(const json& row, const char* key, std::size_t index, const fs::path& file) {
   const double v = figure(row, key, index, file);
-  constexpr double kMostCount = 1e12;  // far above any sheet, part or seam count; keeps the cast defined
+  constexpr double kMostCount = 1e9;  // far above any sheet, part or seam count; fits the table's ints
   if (v != std::floor(v) || v > kMostCount)
     throw InputError(file.string(), "row " + std::to_string(index + 1) + ": '" + key + "' is not a count");
   return static_cast<long>(v);
