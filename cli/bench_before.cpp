@@ -29,13 +29,17 @@ std::string read_report_text(const fs::path& file) {
   return text;
 }
 
+// The refusal of row `index` (0-based) of the report: "<file>: row <index + 1><problem>".
+InputError row_error(const fs::path& file, std::size_t index, const std::string& problem) {
+  return InputError(file.string(), "row " + std::to_string(index + 1) + problem);
+}
+
 // A figure of row `index`: a finite number, at least 0.
 double figure(const json& row, const char* key, std::size_t index, const fs::path& file) {
   const auto it = row.find(key);
-  const std::string where = "row " + std::to_string(index + 1);
-  if (it == row.end()) throw InputError(file.string(), where + " has no figure '" + key + "'");
+  if (it == row.end()) throw row_error(file, index, std::string(" has no figure '") + key + "'");
   if (!it->is_number() || !std::isfinite(it->get<double>()) || it->get<double>() < 0)
-    throw InputError(file.string(), where + ": '" + key + "' is not a number of at least 0");
+    throw row_error(file, index, std::string(": '") + key + "' is not a number of at least 0");
   return it->get<double>();
 }
 
@@ -43,15 +47,14 @@ long count(const json& row, const char* key, std::size_t index, const fs::path& 
   const double v = figure(row, key, index, file);
   constexpr double kMostCount = 1e9;  // far above any sheet, part or seam count; fits the table's ints
   if (v != std::floor(v) || v > kMostCount)
-    throw InputError(file.string(), "row " + std::to_string(index + 1) + ": '" + key + "' is not a count");
+    throw row_error(file, index, std::string(": '") + key + "' is not a count");
   return static_cast<long>(v);
 }
 
 BeforeRun run_of(const json& row, std::size_t index, const fs::path& file) {
   BeforeRun r;
   const auto mesh = row.find("mesh");
-  if (mesh == row.end() || !mesh->is_string())
-    throw InputError(file.string(), "row " + std::to_string(index + 1) + " names no mesh");
+  if (mesh == row.end() || !mesh->is_string()) throw row_error(file, index, " names no mesh");
   r.mesh = mesh->get<std::string>();
   r.size_mm = figure(row, "size_mm", index, file);
   r.sheets = count(row, "sheet_count", index, file);
@@ -87,8 +90,7 @@ BeforeRuns read_before_runs(const fs::path& file) {
   out.file = file.string();
   for (std::size_t k = 0; k < rows->size(); ++k) {
     const json& row = (*rows)[k];
-    if (!row.is_object())
-      throw InputError(file.string(), "row " + std::to_string(k + 1) + " is not an object");
+    if (!row.is_object()) throw row_error(file, k, " is not an object");
     if (row.contains("error")) continue;  // a run that failed then has no figures to compare
     out.runs.push_back(run_of(row, k, file));
   }
