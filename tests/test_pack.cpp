@@ -48,6 +48,19 @@ void expect_valid(const std::vector<PackItem>& items, const PackResult& r, const
   }
 }
 
+// The pieces of the penguin_500 example's unfolding with the model `size_mm` large, one item each.
+std::vector<PackItem> penguin_pieces(double size_mm) {
+  const auto& ex = test::unfolded_example("penguin_500.obj");
+  std::vector<PackItem> items;
+  for (const ScaledPiece& p : scaled_pieces(ex.unfolding, size_mm / ex.unfolding.model_extent)) {
+    std::vector<Polygon> tris;
+    for (const Triangle2& t : p.triangles_mm)
+      tris.push_back({t[0], t[1], t[2]});
+    items.push_back({polygon_union(tris), {}});
+  }
+  return items;
+}
+
 }  // namespace
 
 TEST(Pack, RectanglesFillASheetThenSpillOntoTheNext) {
@@ -194,14 +207,7 @@ TEST(Pack, ProgressCountsEveryPlacementAndEndsAtItsTotal) {
 // Orders are packed on several threads and judged in their own order: the threads never change where
 // anything goes, also when the shaken orders stop early.
 TEST(Pack, TheThreadsNeverChangeThePacking) {
-  const auto& ex = test::unfolded_example("penguin_500.obj");
-  std::vector<PackItem> items;
-  for (const ScaledPiece& p : scaled_pieces(ex.unfolding, 60 / ex.unfolding.model_extent)) {
-    std::vector<Polygon> tris;
-    for (const Triangle2& t : p.triangles_mm)
-      tris.push_back({t[0], t[1], t[2]});
-    items.push_back({polygon_union(tris), {}});
-  }
+  std::vector<PackItem> items = penguin_pieces(60);
   // Two of these go to a sheet (57% of it), so the plain orders leave more sheets than the cells need
   // and the shaken orders are tried.
   for (int i = 0; i < 7; ++i)
@@ -295,4 +301,55 @@ TEST(PackBound, SmallOrConcaveShapesCountNothingAndNothingIsZero) {
   EXPECT_EQ(shape_sheet_bound(small, Box2{{0, 0}, {190, 277}}), 0);
   const std::vector<Polygon> concave(6, Polygon{{0, 0}, {150, 0}, {150, 150}, {75, 20}, {0, 150}});
   EXPECT_EQ(shape_sheet_bound(concave, Box2{{0, 0}, {190, 277}}), 0) << "a concave core is refused";
+}
+
+// The packer's grids and scans are tuned for speed (rows tried in a spread order, rotations by how
+// high their rows' widths let them lie, free runs counted by length); none of it may move a piece.
+// These are the placements the plain scan found (main at a8e32f0), to a micrometre and a microradian.
+TEST(Pack, TheFasterScansPlaceEveryPieceWhereThePlainScanDid) {
+  std::vector<PackItem> items = penguin_pieces(150);
+  for (int i = 0; i < 5; ++i)
+    items.push_back(rect(60 + 20 * i, 45 + 15 * i));
+  PackOptions o;
+  o.area_mm = {{10, 10}, {200, 287}};
+  o.keep_out_mm = {{{150, 240}, {200, 287}}};
+  const PackResult r = pack_items(items, o);
+  std::string got;
+  for (const PackPlacement& p : r.placements) {
+    const Vec2 origin = p.transform.apply(Vec2{0, 0}), unit = p.transform.apply(Vec2{1, 0}) - origin;
+    char line[96];
+    std::snprintf(line, sizeof line, "%d %.3f %.3f %.6f\n", p.sheet, origin.x, origin.y,
+                  std::atan2(unit.y, unit.x));
+    got += line;
+  }
+  const std::string plain_scan =
+      "1 168.422 33.907 2.094395\n"
+      "1 43.692 146.156 2.617994\n"
+      "0 37.705 36.251 -1.047198\n"
+      "1 101.282 143.998 2.879793\n"
+      "0 26.071 48.860 2.135877\n"
+      "2 28.734 265.991 -1.675126\n"
+      "1 86.504 108.843 -2.729308\n"
+      "1 60.886 168.579 0.000000\n"
+      "1 10.362 202.660 -1.138989\n"
+      "0 117.873 278.734 -0.523599\n"
+      "0 93.501 37.942 -1.570796\n"
+      "1 100.704 51.793 1.047198\n"
+      "0 117.870 256.265 -0.739662\n"
+      "1 143.376 285.853 -2.525259\n"
+      "1 50.300 23.365 0.523599\n"
+      "1 172.162 93.661 0.000000\n"
+      "0 159.134 163.938 2.356194\n"
+      "1 70.033 50.098 0.523599\n"
+      "0 57.864 142.287 -1.047198\n"
+      "0 138.173 28.956 -1.132917\n"
+      "1 154.873 63.235 -1.047198\n"
+      "1 85.697 37.352 -1.308997\n"
+      "0 197.769 163.942 2.901896\n"
+      "0 55.374 83.374 1.570796\n"
+      "0 117.874 177.874 0.000000\n"
+      "1 10.374 210.874 0.000000\n"
+      "0 83.165 41.371 0.261799\n"
+      "0 115.374 145.874 1.570796\n";
+  EXPECT_EQ(got, plain_scan);
 }

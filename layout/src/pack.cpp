@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <tuple>
@@ -21,8 +23,10 @@
 namespace foldkit::layout {
 namespace {
 
-// 5 bytes a cell per open sheet: a 3 m x 3 m sheet in 0.5 mm cells is 36 million.
+// About 4 bytes a cell per open sheet (SheetGrid): a 3 m x 3 m sheet in 0.5 mm cells is 36 million.
 constexpr double kMaxGridCells = 64e6;
+// Cells across a sheet at most: a column number fits two bytes (SheetGrid::Column). 16 m at 0.5 mm.
+constexpr double kMostGridColumns = 32767;
 constexpr std::uint64_t kShakeSeed = 1;
 
 // An item at one rotation, as runs of cells per row relative to its raster origin.
@@ -30,10 +34,17 @@ struct Raster {
   double angle_rad = 0;
   Vec2 origin;  // item-frame point (after rotation) at the raster's lower-left cell corner
   int width = 0, height = 0;
-  std::vector<std::vector<std::pair<int, int>>> runs;  // per row: inclusive [i0, i1]
-  std::vector<int> widest_run;                         // per row: the longest run, in cells
+  // Per row j: inclusive [i0, i1] runs, run_cells[row_start[j] .. row_start[j + 1]), kept in one block.
+  std::vector<std::pair<int, int>> run_cells;
+  std::vector<int> row_start;
+  std::vector<int> widest_run;   // per row: the longest run, in cells
+  std::vector<int> probe_order;  // rows spread out: far rows collide independently
   long cells = 0;
   double centroid_x = 0, centroid_y = 0;  // mean cell position, in cells from the raster origin
+
+  std::span<const std::pair<int, int>> runs(int j) const {
+    return {run_cells.data() + row_start[j], run_cells.data() + row_start[j + 1]};
+  }
 };
 
 std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
@@ -49,6 +60,22 @@ std::vector<Polygon> rotate_all(std::span<const Polygon> shape, double angle) {
 std::vector<Polygon> grow_shape(std::span<const Polygon> shape, double grow) {
   constexpr double kArcTolerance = 0.02;
   return polygon_offset(shape, grow + kArcTolerance, kArcTolerance);
+}
+
+// 0..n-1 in van der Corput order (the middle, the quarters, the eighths, ...).
+std::vector<int> spread_order(int n) {
+  std::vector<int> order;
+  order.reserve(static_cast<std::size_t>(std::max(n, 0)));
+  int bits = 0;
+  while ((1 << bits) < n)
+    ++bits;
+  for (int k = 0; k < (1 << bits); ++k) {
+    int rev = 0;
+    for (int b = 0; b < bits; ++b)
+      if (k & (1 << b)) rev |= 1 << (bits - 1 - b);
+    if (rev < n) order.push_back(rev);
+  }
+  return order;
 }
 
 // Marks every cell whose centre lies inside the grown shape turned by `angle`: with grow = spacing/2
@@ -71,7 +98,7 @@ Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell
   r.origin = box.min;
   r.width = static_cast<int>(std::ceil(box.width() / cell)) + 1;
   r.height = static_cast<int>(std::ceil(box.height() / cell)) + 1;
-  r.runs.resize(r.height);
+  r.row_start.reserve(static_cast<std::size_t>(r.height) + 1);
   // Each edge adds its crossings to the rows whose centre line it spans: one pass over the edges
   // instead of one per row.
   std::vector<std::vector<double>> crossings(r.height);
@@ -90,6 +117,7 @@ Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell
       }
     }
   for (int j = 0; j < r.height; ++j) {
+    r.row_start.push_back(static_cast<int>(r.run_cells.size()));
     std::vector<double>& xs = crossings[j];
     std::sort(xs.begin(), xs.end());
     // Clipper's offset output is a set of disjoint outer loops and holes: even-odd filling is exact.
@@ -99,15 +127,16 @@ Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell
       i0 = std::max(i0, 0);
       i1 = std::min(i1, r.width - 1);
       if (i0 > i1) continue;
-      auto& row = r.runs[j];
-      if (!row.empty() && i0 <= row.back().second + 1) {
+      auto& row = r.run_cells;
+      if (static_cast<int>(row.size()) > r.row_start.back() && i0 <= row.back().second + 1) {
         row.back().second = std::max(row.back().second, i1);
       } else {
         row.push_back({i0, i1});
       }
     }
     r.widest_run.push_back(0);
-    for (auto [i0, i1] : r.runs[j]) {
+    for (std::size_t k = static_cast<std::size_t>(r.row_start.back()); k < r.run_cells.size(); ++k) {
+      const auto [i0, i1] = r.run_cells[k];
       r.widest_run.back() = std::max(r.widest_run.back(), i1 - i0 + 1);
       const long n = i1 - i0 + 1;
       r.cells += n;
@@ -115,6 +144,8 @@ Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell
       r.centroid_y += static_cast<double>(j) * n;
     }
   }
+  r.row_start.push_back(static_cast<int>(r.run_cells.size()));
+  r.probe_order = spread_order(r.height);
   if (r.cells > 0) {
     r.centroid_x /= r.cells;
     r.centroid_y /= r.cells;
@@ -127,37 +158,92 @@ Raster rasterize(std::span<const Polygon> grown_shape, double angle, double cell
 // and that cell tells how far the item must move right.
 class SheetGrid {
  public:
+  // A cell's column; sheets are at most kMostGridColumns cells across (pack_grid), so two bytes hold
+  // it and a sheet row is half the memory the packing reads most.
+  using Column = std::int16_t;
+
   SheetGrid(int nx, int ny)
       : nx_(nx),
         ny_(ny),
-        taken_(std::size_t(nx) * ny, 0),
-        last_taken_(taken_.size(), -1),
-        widest_free_(ny, nx) {
+        last_taken_(std::size_t(nx) * ny, Column{-1}),
+        widest_free_(ny, nx),
+        runs_of_length_(std::size_t(nx + 1) * ny, 0) {
     free_ = long(nx) * ny;
+    for (int y = 0; y < ny; ++y)
+      runs_of_length_[std::size_t(y) * (nx + 1) + nx] = 1;
   }
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   long free_cells() const { return free_; }
 
+  // The runs of free cells of row y counted by length afresh, and the longest.
+  void count_free_runs(int y) {
+    const Column* last = &last_taken_[std::size_t(y) * nx_];
+    std::uint16_t* runs = &runs_of_length_[std::size_t(y) * (nx_ + 1)];
+    std::fill(runs, runs + nx_ + 1, std::uint16_t{0});
+    int widest = 0;
+    for (int x = 0; x < nx_; ++x) {
+      const int run = x - last[x];
+      if (run > 0 && (x + 1 == nx_ || last[x + 1] == x + 1)) {
+        ++runs[run];
+        widest = std::max(widest, run);
+      }
+    }
+    widest_free_[y] = widest;
+  }
+
+  // This grid made equal to `blank` (a grid of the same size this one was copied from) by copying back
+  // only the rows taken since: a sheet's grid is about a megabyte, most of it untouched by a packing.
+  void reset_to(const SheetGrid& blank) {
+    if (dirty_low_ <= dirty_high_) {
+      const std::size_t from = std::size_t(dirty_low_) * nx_, to = std::size_t(dirty_high_ + 1) * nx_;
+      std::copy(blank.last_taken_.begin() + from, blank.last_taken_.begin() + to, last_taken_.begin() + from);
+      std::copy(blank.widest_free_.begin() + dirty_low_, blank.widest_free_.begin() + dirty_high_ + 1,
+                widest_free_.begin() + dirty_low_);
+      const std::size_t row = std::size_t(nx_) + 1;
+      std::copy(blank.runs_of_length_.begin() + dirty_low_ * row,
+                blank.runs_of_length_.begin() + (dirty_high_ + 1) * row,
+                runs_of_length_.begin() + dirty_low_ * row);
+    }
+    free_ = blank.free_;
+    dirty_low_ = blank.dirty_low_;
+    dirty_high_ = blank.dirty_high_;
+  }
+
   void take(int y, int x0, int x1) {
     if (y < 0 || y >= ny_) return;
     x0 = std::max(x0, 0);
     x1 = std::min(x1, nx_ - 1);
     if (x0 > x1) return;
-    std::uint8_t* taken = &taken_[std::size_t(y) * nx_];
-    int* last = &last_taken_[std::size_t(y) * nx_];
+    dirty_low_ = std::min(dirty_low_, y);
+    dirty_high_ = std::max(dirty_high_, y);
+    Column* last = &last_taken_[std::size_t(y) * nx_];
+    const int run_start = x0 > 0 ? last[x0 - 1] + 1 : 0;
+    const long free_before = free_;
     for (int x = x0; x <= x1; ++x) {
-      free_ -= !taken[x];
-      taken[x] = 1;
-      last[x] = x;
+      free_ -= last[x] != x;  // a cell is taken where it is its own last taken cell
+      last[x] = static_cast<Column>(x);
     }
     // Beyond the run, the last taken cell is x1 until a cell taken before.
-    for (int x = x1 + 1; x < nx_ && last[x] < x1; ++x)
-      last[x] = x1;
-    int widest = 0;
-    for (int x = 0; x < nx_; ++x)
-      widest = std::max(widest, x - last[x]);
+    int run_end = x1 + 1;
+    for (; run_end < nx_ && last[run_end] < x1; ++run_end)
+      last[run_end] = static_cast<Column>(x1);
+    // Cells taken out of one free run (an item's, never overlapping) leave every other run as it was:
+    // that run is counted as the two pieces left of it, and the widest shrinks only when no run that
+    // long is left.
+    if (free_before - free_ != x1 - x0 + 1) {
+      count_free_runs(y);
+      return;
+    }
+    std::uint16_t* runs = &runs_of_length_[std::size_t(y) * (nx_ + 1)];
+    --runs[run_end - run_start];
+    ++runs[x0 - run_start];
+    ++runs[run_end - 1 - x1];
+    runs[0] = 0;
+    int widest = widest_free_[y];
+    while (widest > 0 && runs[widest] == 0)
+      --widest;
     widest_free_[y] = widest;
   }
 
@@ -166,36 +252,67 @@ class SheetGrid {
   // `hot` is the raster row that failed last, and becomes the one that fails: scanning down a row at a
   // time, the row above it lands on the same sheet row next, so the check starts there.
   bool rows_may_fit(const Raster& r, int y, int& hot) const {
-    // The row after `hot` first, wrapping round: counting without a division, which cost more than
-    // the test it indexes.
-    int j = hot;
-    for (int step = 0; step < r.height; ++step) {
-      if (++j == r.height) j = 0;
-      if (widest_free_[y + j] < r.widest_run[j]) {
-        hot = j;
-        return false;
-      }
+    if (r.height == 0) return true;
+    const int* free_width = &widest_free_[std::size_t(y)];
+    const int* need = r.widest_run.data();
+    const int first = hot + 1 == r.height ? 0 : hot + 1;
+    if (free_width[first] < need[first]) {
+      hot = first;
+      return false;
+    }
+    // Then every row, a block at a time: comparisons without branches, which the compiler vectorises
+    // (a piece that fits its rows costs a comparison per row, and most rows tried do).
+    constexpr int kBlock = 32;
+    for (int j0 = 0; j0 < r.height; j0 += kBlock) {
+      const int j1 = std::min(j0 + kBlock, r.height);
+      int short_rows = 0;
+      for (int j = j0; j < j1; ++j)
+        short_rows += free_width[j] < need[j];
+      if (short_rows == 0) continue;
+      int j = j0;
+      while (free_width[j] >= need[j])
+        ++j;
+      hot = j;
+      return false;
     }
     return true;
+  }
+
+  // After rows_may_fit(r, y, hot) failed: the highest row below y worth trying. Sheet row y + hot is
+  // narrower than raster row hot; each lower row puts a higher raster row on it, and a row that is
+  // still too wide there fails the same way, so the scan skips down the piece's wide body at once.
+  int next_row_to_try(const Raster& r, int y, int hot) const {
+    const int narrow = y + hot;
+    const int free_width = widest_free_[narrow];
+    int below = y - 1;
+    while (below >= 0 && narrow - below < r.height && r.widest_run[narrow - below] > free_width)
+      --below;
+    return below;
   }
 
   // Smallest x >= from at which raster r, with its bottom row at y, meets no taken cell; -1 if none.
   int first_fit_in_row(const Raster& r, int y, int from) const {
     int x = from;
-    int hot_row = 0;  // the row that collided last is the likeliest to collide again
+    int hot_row = -1;  // the row that collided last is the likeliest to collide again
+    const auto collides = [&](int j) {
+      const Column* last = &last_taken_[std::size_t(y + j) * nx_];
+      for (auto [i0, i1] : r.runs(j)) {
+        const int hit = last[x + i1];
+        if (hit >= x + i0) {
+          x = hit - i0 + 1;
+          return true;
+        }
+      }
+      return false;
+    };
     while (x + r.width <= nx_) {
+      if (hot_row >= 0 && collides(hot_row)) continue;
       bool collided = false;
-      int j = hot_row;
-      for (int step = 0; step < r.height && !collided; ++step, j = j + 1 == r.height ? 0 : j + 1) {
-        const int* last = &last_taken_[std::size_t(y + j) * nx_];
-        for (auto [i0, i1] : r.runs[j]) {
-          const int hit = last[x + i1];
-          if (hit >= x + i0) {
-            x = hit - i0 + 1;
-            hot_row = j;
-            collided = true;
-            break;
-          }
+      for (int j : r.probe_order) {
+        if (j != hot_row && collides(j)) {
+          hot_row = j;
+          collided = true;
+          break;
         }
       }
       if (!collided) return x;
@@ -205,10 +322,11 @@ class SheetGrid {
 
  private:
   int nx_, ny_;
-  std::vector<std::uint8_t> taken_;
-  std::vector<int> last_taken_;
-  std::vector<int> widest_free_;  // per row: the longest run of free cells
+  std::vector<Column> last_taken_;
+  std::vector<int> widest_free_;               // per row: the longest run of free cells
+  std::vector<std::uint16_t> runs_of_length_;  // per row, per length 0..nx: free runs that long
   long free_ = 0;
+  int dirty_low_ = std::numeric_limits<int>::max(), dirty_high_ = -1;  // rows taken since made blank
 };
 
 struct Spot {
@@ -217,22 +335,57 @@ struct Spot {
   double score_y = -1e300, score_x = 1e300;
 };
 
+// Whether a spot scored (score_y, score_x) at rotation k (the index in the item's rasters) beats `b` at
+// rotation b_k: its centre of area higher on the sheet, then further left, then an earlier rotation.
+bool beats(double score_y, double score_x, int k, const Spot& b, int b_k) {
+  if (score_y > b.score_y + 1e-9) return true;
+  if (score_y < b.score_y - 1e-9) return false;
+  return score_x < b.score_x || (score_x == b.score_x && k < b_k);
+}
+
 // The placement whose centre of area is highest on the sheet (then leftmost), over all rotations:
 // judging by the centre rather than the bottom edge lets a tall piece drop into a tall gap instead
 // of lying flat across the top. For each rotation the highest feasible row is found by scanning down.
+// The rows' widths alone say how high each rotation could lie, cheaply: rotations are tried highest
+// first, and once the best found lies above what the rest could reach, they are not tried at all.
 Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
-  Spot best;
-  for (const Raster& r : rasters) {
+  struct Reach {
+    int k = 0, y = -1, hot = -1;
+    double score_y = 0;
+  };
+  std::vector<Reach> reach;
+  reach.reserve(rasters.size());
+  for (int k = 0; k < static_cast<int>(rasters.size()); ++k) {
+    const Raster& r = rasters[static_cast<std::size_t>(k)];
     if (r.width > grid.nx() || r.height > grid.ny() || r.cells > grid.free_cells()) continue;
-    int hot = -1;
-    for (int y = grid.ny() - r.height; y >= 0; --y) {
+    Reach at{k, grid.ny() - r.height, -1, 0};
+    while (at.y >= 0 && !grid.rows_may_fit(r, at.y, at.hot))
+      at.y = grid.next_row_to_try(r, at.y, at.hot);
+    if (at.y < 0) continue;
+    at.score_y = at.y + r.centroid_y;
+    reach.push_back(at);
+  }
+  std::stable_sort(reach.begin(), reach.end(),
+                   [](const Reach& a, const Reach& b) { return a.score_y > b.score_y; });
+  Spot best;
+  int best_k = -1;
+  for (Reach& at : reach) {
+    if (at.score_y < best.score_y - 1e-9) break;
+    const Raster& r = rasters[static_cast<std::size_t>(at.k)];
+    for (int y = at.y; y >= 0; --y) {
       const double score_y = y + r.centroid_y;
       if (score_y < best.score_y - 1e-9) break;
-      if (!grid.rows_may_fit(r, y, hot)) continue;
+      if (y < at.y && !grid.rows_may_fit(r, y, at.hot)) {
+        y = grid.next_row_to_try(r, y, at.hot) + 1;  // the loop steps down to it
+        continue;
+      }
       const int x = grid.first_fit_in_row(r, y, 0);
       if (x < 0) continue;
       const double score_x = x + r.centroid_x;
-      if (score_y > best.score_y + 1e-9 || score_x < best.score_x) best = {x, y, &r, score_y, score_x};
+      if (best_k < 0 || beats(score_y, score_x, at.k, best, best_k)) {
+        best = {x, y, &r, score_y, score_x};
+        best_k = at.k;
+      }
       break;
     }
   }
@@ -322,11 +475,15 @@ PackGrid pack_grid(const PackOptions& options) {
   const double cells_x = std::floor((options.area_mm.width() + 2 * g.half_gap) / g.cell);
   const double cells_y = std::floor((options.area_mm.height() + 2 * g.half_gap) / g.cell);
   // Checked in floating point, before any cast or allocation (a 1e9 mm sheet was a 4e18-byte grid).
-  if (!(cells_x * cells_y <= kMaxGridCells)) {
+  if (!(cells_x * cells_y <= kMaxGridCells && cells_x <= kMostGridColumns)) {
     char text[160];
-    std::snprintf(text, sizeof text,
-                  "the sheet is too large to pack: %gx%g mm in %g mm cells is over %g cells",
-                  options.area_mm.width(), options.area_mm.height(), g.cell, kMaxGridCells);
+    if (cells_x > kMostGridColumns)
+      std::snprintf(text, sizeof text, "the sheet is too wide to pack: %g mm in %g mm cells is over %g cells",
+                    options.area_mm.width(), g.cell, kMostGridColumns);
+    else
+      std::snprintf(text, sizeof text,
+                    "the sheet is too large to pack: %gx%g mm in %g mm cells is over %g cells",
+                    options.area_mm.width(), options.area_mm.height(), g.cell, kMaxGridCells);
     throw LayoutError(text);
   }
   g.nx = std::max(0, static_cast<int>(cells_x));
@@ -426,7 +583,7 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
         if (open == static_cast<int>(sheets.size())) {
           sheets.push_back(blank);
         } else {
-          sheets[open] = blank;  // copies into the buffers already there
+          sheets[open].reset_to(blank);
         }
         ++open;
         last_lowest = g.ny;
@@ -438,7 +595,7 @@ OrderRun pack_in_order(const std::vector<int>& order, const ItemRasters& shapes,
     }
     const Raster& r = *spot.raster;
     for (int j = 0; j < r.height; ++j)
-      for (auto [i0, i1] : r.runs[j])
+      for (auto [i0, i1] : r.runs(j))
         sheets[sheet].take(spot.y + j, spot.x + i0, spot.x + i1);
     if (sheet + 1 == open) last_lowest = std::min(last_lowest, spot.y);
     run.item_cells[index] = r.cells;
