@@ -812,7 +812,8 @@ unfold::PartOptions part_options_of(const unfold::Mesh& mesh, const unfold::Unfo
 
 namespace {
 
-// Above it: fewer trials and full layouts, no re-split of the last sheet, no second choice with other tabs.
+// Above it: fewer trials and full layouts, no search that empties sheets, no re-split of the last sheet, no
+// second choice with other tabs.
 constexpr int kManyFaces = 1500;
 
 // choose_parts with the tabs `asked` plans; `least` is set to least_sheets once a piece had to be split.
@@ -823,14 +824,12 @@ ChosenParts choose_parts_once(const unfold::Mesh& mesh, const unfold::Unfolding&
                               const ChooseOptions& choose, long& least, long fewer_sheets_than = 0) {
   if (!asked.size_mm || asked.fit || !asked.split_oversized || !(u.model_extent > 0))
     return {u, 0, 0, std::nullopt};
-  // Large meshes pack at the rotations that keep a 2,000-face layout within 3 s: at 24 the slowest took
-  // 3.1 s (cheburashka_2000 at 250 mm; 2.6 s at 8) for 2 sheets of 114.
-  constexpr int kLargeMeshRotations = 8;
+  // Large meshes pack at all the rotations asked (24: koala_2000 at 250 mm and spot_2000 at 150 mm take a
+  // sheet fewer than at 8, and the slowest 2,000-face layout is fish_2000 at 150 mm, 2.4 s), but do not
+  // search for sheets to empty once packed: with it no 2,000-face run saved a sheet, and plane_2000 at
+  // 250 mm took 2.8 s instead of 2.3 (session 45).
   const bool large = mesh.num_faces() > kManyFaces;
   layout::LayoutOptions o = asked;
-  if (large) o.pack.rotations = std::min(o.pack.rotations, kLargeMeshRotations);
-  // Nor do they search for sheets to empty once packed: plane_2000 at 250 mm took 3.1 s with it, 2.4 s
-  // without, for the same 3 sheets.
   if (large) o.pack.sheet_search_orders = 0;
   // Nor do their tabs go into bays: spot_2000 at 150 mm took 4.3 s with them, 1.8 s without, for the
   // same 3 sheets and 18 parts.
