@@ -63,10 +63,37 @@ fs::path foldkit_binary() {
   return fs::path(FOLDKIT_BINARY);
 }
 
+namespace {
+// Every directory a test process asks for lives under one root of that process, removed when the process
+// ends: each ctest case is a process, and a suite run used to leave about 450 directories (up to 12 MB
+// each) in /tmp. A child forked by a test exits through _exit, and the owner's pid is checked anyway, so
+// a child never removes what its parent still uses. FOLDKIT_KEEP_TEST_FILES keeps them for a post-mortem.
+class TempRoot {
+ public:
+  TempRoot()
+      : owner_(::getpid()), path_(fs::temp_directory_path() / ("foldkit-test-" + std::to_string(owner_))) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  TempRoot(const TempRoot&) = delete;
+  TempRoot& operator=(const TempRoot&) = delete;
+  ~TempRoot() {
+    if (::getpid() != owner_ || std::getenv("FOLDKIT_KEEP_TEST_FILES") != nullptr) return;
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  pid_t owner_;
+  fs::path path_;
+};
+}  // namespace
+
 fs::path temp_dir(const std::string& tag) {
+  static const TempRoot root;
   static std::atomic<int> counter{0};
-  fs::path p = fs::temp_directory_path() /
-               ("foldkit-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  fs::path p = root.path() / (tag + "-" + std::to_string(counter++));
   fs::remove_all(p);
   fs::create_directories(p);
   return p;

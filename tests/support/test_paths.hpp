@@ -27,7 +27,8 @@ std::filesystem::path foldkit_binary();
 std::string slurp(const std::filesystem::path& p);
 /// How many entries directory `dir` holds (what a failed write may have left behind).
 int count_entries(const std::filesystem::path& dir);
-/// A fresh empty directory under the system temp dir, unique per call.
+/// A fresh empty directory under the system temp dir, unique per call; all of a test process's are removed
+/// when it exits (set FOLDKIT_KEEP_TEST_FILES to keep them).
 std::filesystem::path temp_dir(const std::string& tag);
 
 /// What a run of the foldkit executable produced.
