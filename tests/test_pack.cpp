@@ -110,6 +110,28 @@ TEST(Pack, ALongItemIsTurnedToFit) {
   expect_valid(items, r, o);
 }
 
+TEST(Pack, AnItemIsTurnedToLayItsLongestEdgeAlongTheSheet) {
+  // An acute triangle, base 60 and height 40, given tilted by 97 degrees. Only with its base along
+  // the sheet's side does it fit 62.5 x 42.5 mm: along either other side it spans 50 x 48 mm, the
+  // nearest of the 24 even rotations leaves it 7 degrees tilted and 47 mm tall, and the smallest
+  // bounding box ties on all three sides (its area is twice the triangle's), so that turn may lay
+  // any of them flat.
+  const Rotation tilt(97 * std::numbers::pi / 180);
+  PackItem triangle{{{tilt(Vec2{0, 0}), tilt(Vec2{60, 0}), tilt(Vec2{30, 40})}}, {}};
+  const std::vector<PackItem> items = {triangle};
+  PackOptions o;
+  o.area_mm = {{0, 0}, {62.5, 42.5}};
+  o.aligned_hull_edges = 0;
+  EXPECT_EQ(pack_items(items, o).unplaced.size(), 1u) << "it fits nowhere else";
+  o.aligned_hull_edges = 1;
+  const PackResult r = pack_items(items, o);
+  ASSERT_TRUE(r.unplaced.empty());
+  expect_valid(items, r, o);
+  const Vec2 base =
+      r.placements[0].transform.apply(tilt(Vec2{60, 0})) - r.placements[0].transform.apply(tilt(Vec2{0, 0}));
+  EXPECT_NEAR(std::fabs(base.y), 0, 1e-9) << "the base lies along the sheet's side";
+}
+
 TEST(Pack, ASmallItemNestsInTheBayOfAConcaveOne) {
   // A cup 60 wide, 40 tall, walls 10 thick, and a 20 x 20 square that only fits inside the cup:
   // bounding boxes alone would need two sheets.
@@ -313,6 +335,7 @@ TEST(Pack, TheFasterScansPlaceEveryPieceWhereThePlainScanDid) {
   PackOptions o;
   o.area_mm = {{10, 10}, {200, 287}};
   o.keep_out_mm = {{{150, 240}, {200, 287}}};
+  o.aligned_hull_edges = 0;  // the rotations the plain scan was recorded at
   const PackResult r = pack_items(items, o);
   std::string got;
   for (const PackPlacement& p : r.placements) {

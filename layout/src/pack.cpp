@@ -392,10 +392,25 @@ Spot find_spot(const SheetGrid& grid, const std::vector<Raster>& rasters) {
   return best;
 }
 
-std::vector<double> candidate_angles(const PackItem& item, int rotations) {
+// The turns that lay each of the `count` longest edges of the hull of `points` along the x axis.
+std::vector<double> hull_edge_angles(const std::vector<Vec2>& points, int count) {
+  const std::vector<Vec2> hull = convex_hull(points);
+  std::vector<std::pair<double, double>> edges;  // minus the length (longest first), direction
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
+    edges.emplace_back(-norm(e), std::atan2(e.y, e.x));
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<double> angles;
+  for (std::size_t i = 0; i < std::min(edges.size(), static_cast<std::size_t>(std::max(count, 0))); ++i)
+    angles.push_back(-edges[i].second);
+  return angles;
+}
+
+std::vector<double> candidate_angles(const PackItem& item, const PackOptions& options) {
   if (!item.rotate) return {0.0};
   std::vector<double> angles;
-  const int n = std::max(rotations, 1);
+  const int n = std::max(options.rotations, 1);
   for (int k = 0; k < n; ++k)
     angles.push_back(2 * std::numbers::pi * k / n);
   std::vector<Vec2> points;
@@ -405,6 +420,9 @@ std::vector<double> candidate_angles(const PackItem& item, int rotations) {
   for (int k = 0; k < 4; ++k)
     angles.push_back(tight + k * std::numbers::pi / 2);
   angles.insert(angles.end(), item.extra_angles_rad.begin(), item.extra_angles_rad.end());
+  for (double flush : hull_edge_angles(points, options.aligned_hull_edges))
+    for (int k = 0; k < 4; ++k)
+      angles.push_back(flush + k * std::numbers::pi / 2);
   std::vector<double> unique;
   for (double a : angles) {
     a = std::fmod(a, 2 * std::numbers::pi);
@@ -512,7 +530,7 @@ struct ItemRasters {
   std::vector<double> area, longest, girth;
 };
 
-ItemRasters rasterize_items(std::span<const PackItem> items, int rotations, const PackGrid& g) {
+ItemRasters rasterize_items(std::span<const PackItem> items, const PackOptions& options, const PackGrid& g) {
   ItemRasters r;
   r.rasters.resize(items.size());
   r.area.resize(items.size());
@@ -520,7 +538,7 @@ ItemRasters rasterize_items(std::span<const PackItem> items, int rotations, cons
   r.girth.resize(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::vector<Polygon> grown = grow_shape(items[i].shape_mm, g.grow);
-    for (double angle : candidate_angles(items[i], rotations))
+    for (double angle : candidate_angles(items[i], options))
       r.rasters[i].push_back(rasterize(grown, angle, g.cell, g.nx, g.ny));
     r.area[i] = std::fabs(total_area(items[i].shape_mm));
     Box2 box;
@@ -841,7 +859,7 @@ PackResult pack_items(std::span<const PackItem> items, const PackOptions& option
   if (options.engine == PackEngine::Nest2d) return pack_items_nest2d(items, options);
   const PackGrid g = pack_grid(options);
   const SheetGrid blank = blank_sheet(g, options.keep_out_mm);
-  const ItemRasters shapes = rasterize_items(items, options.rotations, g);
+  const ItemRasters shapes = rasterize_items(items, options, g);
   const int shaken = shaken_orders(items.size(), options.shaken_orders);
   PlacementCount count{options, static_cast<long>(3 + shaken) * static_cast<long>(items.size())};
 
