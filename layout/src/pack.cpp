@@ -401,9 +401,10 @@ std::vector<double> hull_edge_angles(const std::vector<Vec2>& points, int count)
     edges.emplace_back(-norm(e), std::atan2(e.y, e.x));
   }
   std::sort(edges.begin(), edges.end());
+  edges.resize(std::min(edges.size(), static_cast<std::size_t>(std::max(count, 0))));
   std::vector<double> angles;
-  for (std::size_t i = 0; i < std::min(edges.size(), static_cast<std::size_t>(std::max(count, 0))); ++i)
-    angles.push_back(-edges[i].second);
+  for (const auto& [minus_length, direction] : edges)
+    angles.push_back(-direction);
   return angles;
 }
 

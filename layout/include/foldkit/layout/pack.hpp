@@ -40,7 +40,7 @@ struct PackOptions {
   /// Each item is also turned so that each of its this many longest convex hull edges lies along the
   /// sheet's sides (four quarter turns each): a part lies flush against the sheet's edge or a
   /// neighbour's straight side along such an edge. 3 against 0 over `bench --layout` up to 1,000
-  /// faces: 441 sheets instead of 442, 3,225 parts instead of 3,274, for 5% more CPU (session 46).
+  /// faces: 441 sheets instead of 442, 3,225 parts instead of 3,274, for 5-12% more CPU (session 46).
   int aligned_hull_edges = 3;
   /// Most shaken largest-first orders tried when the plain ones leave a sheet more than the area
   /// needs (fewer for many items); 0: none.
