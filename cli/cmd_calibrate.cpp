@@ -222,7 +222,7 @@ void write_page_and_job(const CalibrateArgs& args, const devices::DeviceProfile&
 
 void run_calibrate(const CalibrateArgs& args) {
   const devices::ProfileSet profiles = load_cli_profiles(args.profiles);
-  const devices::DeviceProfile& device = profiles.device(args.device);
+  const devices::DeviceProfile& device = device_option(profiles, args.device);
   if (args.show) {
     show_offset(args, device);
     return;
@@ -231,7 +231,7 @@ void run_calibrate(const CalibrateArgs& args) {
     store_offset(args, device);
     return;
   }
-  write_page_and_job(args, device, profiles.medium(args.media));
+  write_page_and_job(args, device, media_option(profiles, args.media));
 }
 
 void setup_calibrate(CLI::App& app) {

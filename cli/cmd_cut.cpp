@@ -427,8 +427,8 @@ void run_cut(CutArgs args) {
   refuse_output_over_inputs("--preview", args.preview, inputs);
   refuse_output_over_inputs("--overlay", args.overlay, inputs);
   // A typical two-holder cutter stands in when no device is named.
-  devices::DeviceProfile device = profiles.device(args.device.empty() ? "cameo4" : args.device);
-  const devices::MediaProfile& media = profiles.medium(args.media);
+  devices::DeviceProfile device = device_option(profiles, args.device.empty() ? "cameo4" : args.device);
+  const devices::MediaProfile& media = media_option(profiles, args.media);
   override_usb_ids(args, device);
   check_output_language(args, device);
   if (args.device.empty() && !args.json)

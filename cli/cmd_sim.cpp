@@ -61,7 +61,7 @@ void run_sim(const SimArgs& args) {
     throw Error("--paper " + args.paper + ": unknown paper (use " + layout::paper_names() + ")",
                 ExitCode::Usage);
   const devices::ProfileSet profiles = load_cli_profiles(args.profiles);
-  const devices::DeviceProfile& device = profiles.device(args.device);
+  const devices::DeviceProfile& device = device_option(profiles, args.device);
   check_language(args.file, device);
   const std::string stream = read_stream(args.file);
 

@@ -94,9 +94,14 @@ void run_unfold(UnfoldArgs args) {
   // The parts of make's default colour options: a coloured model keeps the gap its bleed needs.
   const layout::LayoutOptions layout_options =
       with_bleed_gap(asked_layout, run.loaded.mesh, layout::FillOptions{});
-  const std::optional<layout::LayoutResult> laid_out = choose_and_note_parts(
-      run, layout_options,
-      bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));
+  std::optional<layout::LayoutResult> laid_out;
+  try {
+    laid_out = choose_and_note_parts(
+        run, layout_options,
+        bleed_room(choose_options_of(args.layout), run.loaded.mesh, layout::FillOptions{}));
+  } catch (const LayoutError& e) {
+    throw naming_mesh(args.mesh, e);
+  }
   line.clear();
   const unfold::Unfolding& u = run.result.unfolding;
   if (!args.output.empty())

@@ -173,16 +173,19 @@ layout::LayoutOptions with_bleed_gap(layout::LayoutOptions o, const unfold::Mesh
   return o;
 }
 
-PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
+LayoutError naming_mesh(const std::string& mesh_file, const LayoutError& e) {
+  const auto* piece = dynamic_cast<const layout::PieceTooLarge*>(&e);
+  return LayoutError(mesh_file + ": " + (piece ? piece->message("--size") : std::string(e.what())));
+}
+
+namespace {
+
+PipelineRun unfold_and_lay_out(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
                                const std::optional<layout::FillOptions>& fills,
-                               const ChooseOptions& asked_choice) {
-  // Options that leave no room for a part fail before the mesh is read, not after its unfolding.
-  layout::check_options(asked_layout_options);
+                               const ChooseOptions& asked_choice,
+                               std::chrono::steady_clock::time_point deadline) {
   const double limit_s = unfold_options.unfold.time_limit_s;
-  const auto deadline =
-      std::chrono::steady_clock::now() +
-      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limit_s));
   UnfoldCliOptions unfold_share = unfold_options;
   unfold_share.unfold.time_limit_s = kUnfoldShareOfTimeLimit * limit_s;
   layout::LayoutOptions layout_options = asked_layout_options;
@@ -206,23 +209,40 @@ PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOpti
     line.update(laying_out + p.stage + " " + std::to_string(percent) + "%");
   };
   const auto start = std::chrono::steady_clock::now();
-  try {
-    auto laid_out = choose_and_note_parts(run.unfolded, layout_options,
-                                          bleed_room(asked_choice, run.unfolded.loaded.mesh, fills));
-    run.layout = laid_out ? std::move(*laid_out)
-                          : layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
-  } catch (const LayoutError& e) {
-    if (std::chrono::steady_clock::now() <= deadline) throw;
-    char limit[32];
-    std::snprintf(limit, sizeof limit, "%g", limit_s);
-    throw LayoutError(mesh_file + ": " + e.what() + " (--time-limit " + limit +
-                      " s bounds the whole command: give more time, a smaller --size or --max-faces)");
-  }
+  auto laid_out = choose_and_note_parts(run.unfolded, layout_options,
+                                        bleed_room(asked_choice, run.unfolded.loaded.mesh, fills));
+  run.layout =
+      laid_out ? std::move(*laid_out) : layout::layout_sheets(run.unfolded.result.unfolding, layout_options);
   note_sheets_set_by_faces(run.unfolded.result.unfolding, layout_options, run.layout);
   if (coloured)
     layout::add_fills(run.layout, run.unfolded.loaded.mesh, run.unfolded.result.unfolding, *fills);
   run.layout_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
+}
+
+}  // namespace
+
+PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
+                               const layout::LayoutOptions& asked_layout_options, ProgressLine& line,
+                               const std::optional<layout::FillOptions>& fills,
+                               const ChooseOptions& asked_choice) {
+  // Options that leave no room for a part fail before the mesh is read, not after its unfolding.
+  layout::check_options(asked_layout_options);
+  const double limit_s = unfold_options.unfold.time_limit_s;
+  const auto deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limit_s));
+  try {
+    return unfold_and_lay_out(mesh_file, unfold_options, asked_layout_options, line, fills, asked_choice,
+                              deadline);
+  } catch (const LayoutError& e) {
+    const LayoutError named = naming_mesh(mesh_file, e);
+    if (std::chrono::steady_clock::now() <= deadline) throw named;
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", limit_s);
+    throw LayoutError(std::string(named.what()) + " (--time-limit " + limit +
+                      " s bounds the whole command: give more time, a smaller --size or --max-faces)");
+  }
 }
 
 }  // namespace foldkit::cli

@@ -43,9 +43,14 @@ ChooseOptions bleed_room(ChooseOptions choose, const unfold::Mesh& mesh,
 layout::LayoutOptions with_bleed_gap(layout::LayoutOptions o, const unfold::Mesh& mesh,
                                      const std::optional<layout::FillOptions>& fills);
 
+/// `e`, a refusal met once `mesh_file` was read, worded for the command line: "<file>: <problem>", the
+/// model size of a piece too large for the sheet called --size. A script running many files learns
+/// which one it was.
+LayoutError naming_mesh(const std::string& mesh_file, const LayoutError& e);
+
 /// Loads `mesh_file`, unfolds it and lays out the sheets, showing progress on `line`. Pieces too large
 /// for the paper at the asked --size are first cut into parts that fit (choose_and_note_parts).
-/// Throws InputError (mesh), LayoutError (does not fit) or Error.
+/// Throws InputError (mesh), LayoutError (does not fit: the options alone, or naming_mesh) or Error.
 PipelineRun load_unfold_layout(const std::string& mesh_file, const UnfoldCliOptions& unfold_options,
                                const layout::LayoutOptions& layout_options, ProgressLine& line,
                                const std::optional<layout::FillOptions>& fills = std::nullopt,

@@ -30,4 +30,20 @@ devices::ProfileSet load_cli_profiles(const std::vector<std::string>& files) {
   return set;
 }
 
+const devices::DeviceProfile& device_option(const devices::ProfileSet& profiles, const std::string& id) {
+  try {
+    return profiles.device(id);
+  } catch (const InputError& e) {
+    throw InputError("--device " + id, e.problem());
+  }
+}
+
+const devices::MediaProfile& media_option(const devices::ProfileSet& profiles, const std::string& id) {
+  try {
+    return profiles.medium(id);
+  } catch (const InputError& e) {
+    throw InputError("--media " + id, e.problem());
+  }
+}
+
 }  // namespace foldkit::cli

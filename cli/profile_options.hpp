@@ -22,4 +22,11 @@ std::vector<std::filesystem::path> cli_profile_dirs();
 /// profile, and Error naming the folders looked in when there is no profile at all.
 devices::ProfileSet load_cli_profiles(const std::vector<std::string>& files);
 
+/// The device profile `id` of `profiles`, as --device names it. Throws InputError "--device ID: no such
+/// device profile (known: …)".
+const devices::DeviceProfile& device_option(const devices::ProfileSet& profiles, const std::string& id);
+
+/// The media profile `id` of `profiles`, as --media names it. Throws InputError "--media ID: …".
+const devices::MediaProfile& media_option(const devices::ProfileSet& profiles, const std::string& id);
+
 }  // namespace foldkit::cli

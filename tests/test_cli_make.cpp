@@ -206,7 +206,10 @@ TEST(CliMake, BadRequestsAreOneLineErrorsWithTheirExitCodes) {
       {{"make", mesh, "-o", out, "--size", "12parsecs"}, 2, "expected a length such as 5mm"},
       {{"make", mesh, "-o", (dir / "x.doc").string()}, 2, ".pdf, .svg, .png or .dxf"},
       {{"make", mesh, "-o", out, "--size", "5m"}, 2, "expected a length such as 5mm"},
+      // Refusals once the mesh is read name it, so that a script running many files learns which one.
+      {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, mesh + ": --size 4000 mm: "},
       {{"make", mesh, "-o", out, "--size", "4000mm"}, 5, "largest --size that fits"},
+      {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, mesh + ": piece 1 does not fit"},
       {{"make", mesh, "-o", out, "--size", "300mm", "--no-split"}, 5, "largest --size that fits"},
       {{"make", (dir / "missing.obj").string(), "-o", out}, 3, "missing.obj"},
       // Margins that leave a sliver: --fit scaled the model to 0 mm and wrote an empty sheet.
@@ -270,7 +273,7 @@ TEST(CliMake, NoInputFaceOfALowPolyModelIsSplitAcrossParts) {
       if (run.exit_code == 5) {
         // A face larger than A4 at this size (the drum's octagons are 231 mm across at 250 mm): refused,
         // never cut.
-        EXPECT_NE(run.err.find("flat face"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find(mesh.string() + ": a flat face"), std::string::npos) << run.err;
         EXPECT_NE(run.err.find("the largest --size that fits is"), std::string::npos) << run.err;
         continue;
       }
@@ -351,4 +354,18 @@ TEST(CliMake, ASizeNeedingHundredsOfSheetsIsRefusedBeforeUnfolding) {
             std::string::npos)
       << run.err;
   EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+}
+
+TEST(CliMake, ALayoutStoppedByTheTimeLimitNamesTheFileAndTheLimitAndWritesNothing) {
+  const fs::path dir = test::temp_dir("make-time-limit");
+  const std::string mesh = test::example_mesh("spot_128.obj").string();
+  const fs::path out = dir / "x.pdf";
+  // 10 ms: the unfolding stops early with a valid result, the layout cannot.
+  auto run =
+      test::run_foldkit({"make", mesh, "--size", "250mm", "-o", out.string(), "-q", "--time-limit", "0.01"});
+  EXPECT_EQ(run.exit_code, 5) << run.err;
+  EXPECT_EQ(run.err.rfind("foldkit: " + mesh + ": stopped at the time limit", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find("(--time-limit 0.01 s bounds the whole command"), std::string::npos) << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_FALSE(fs::exists(out));
 }

@@ -356,6 +356,7 @@ nlohmann::json unfold_parts(const fs::path& model, const std::string& size, cons
   try {
     return nlohmann::json::parse(test::stdout_of([&] { cli::run_unfold(args); }));
   } catch (const LayoutError& e) {
+    EXPECT_NE(std::string(e.what()).find(model.string() + ": a flat face"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("the largest --size that fits is"), std::string::npos) << e.what();
     return nullptr;
   }

@@ -496,14 +496,14 @@ const DeviceProfile& ProfileSet::device(const std::string& id) const {
   for (const DeviceProfile& d : devices) {
     if (d.id == id) return d;
   }
-  throw InputError("--device " + id, "no such device profile (known: " + known_ids(devices) + ")");
+  throw InputError("device " + id, "no such device profile (known: " + known_ids(devices) + ")");
 }
 
 const MediaProfile& ProfileSet::medium(const std::string& id) const {
   for (const MediaProfile& m : media) {
     if (m.id == id) return m;
   }
-  throw InputError("--media " + id, "no such media profile (known: " + known_ids(media) + ")");
+  throw InputError("media " + id, "no such media profile (known: " + known_ids(media) + ")");
 }
 
 ProfileSet load_profiles(const fs::path& dir, const std::vector<fs::path>& extra_files) {

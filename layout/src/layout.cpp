@@ -36,11 +36,18 @@ std::string format_mm(double v) {
 
 }  // namespace
 
+std::string PieceTooLarge::message(int piece, Vec2 area_mm, double asked_mm, double largest_mm,
+                                   const std::string& size_name) {
+  return "piece " + std::to_string(piece + 1) + " does not fit the " + format_mm(area_mm.x) + "x" +
+         format_mm(area_mm.y) + " mm printable area at " + size_name + " " + format_mm(asked_mm) +
+         "mm; the largest " + size_name + " that fits is " + format_mm(largest_mm) + "mm";
+}
+
 void check_options(const LayoutOptions& o) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(o.paper_mm.x) || !positive(o.paper_mm.y)) throw LayoutError("paper size must be positive");
   if (!(std::isfinite(o.margin_mm) && o.margin_mm >= 0)) throw LayoutError("margin must be zero or positive");
-  if (o.size_mm && !positive(*o.size_mm)) throw LayoutError("--size must be positive");
+  if (o.size_mm && !positive(*o.size_mm)) throw LayoutError("the model size must be positive");
   if (o.tabs && (!positive(o.tab.width_mm) || !positive(o.tab.min_width_mm)))
     throw LayoutError("tab width must be positive");
   if (!positive(o.label.min_mm) || o.label.max_mm < o.label.min_mm) throw LayoutError("bad label sizes");
@@ -824,13 +831,10 @@ void take_label_tabs_in_place(const unfold::Unfolding& u, Draft& d, const Layout
 }
 
 // The refusal when a piece fits no sheet at the asked size, naming the largest size that fits.
-LayoutError piece_too_large(const unfold::Unfolding& u, const LayoutOptions& o, int piece, double size_mm) {
+PieceTooLarge piece_too_large(const unfold::Unfolding& u, const LayoutOptions& o, int piece, double size_mm) {
   const Box2 area = packing_area(o);
-  const double largest = largest_fitting_size(u, o);
-  return LayoutError("piece " + std::to_string(piece + 1) + " does not fit the " + format_mm(area.width()) +
-                     "x" + format_mm(area.height()) + " mm printable area at --size " + format_mm(size_mm) +
-                     "mm; the largest --size that fits is " +
-                     format_mm(std::floor(std::min(largest, size_mm * 0.99))) + "mm");
+  const double largest = std::floor(std::min(largest_fitting_size(u, o), size_mm * 0.99));
+  return PieceTooLarge(piece, {area.width(), area.height()}, size_mm, largest);
 }
 
 std::vector<Sheet> blank_sheets(const LayoutOptions& o, int count) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/error.hpp"
 #include "foldkit/layout/edge_numbers.hpp"
 #include "foldkit/layout/folds.hpp"
 #include "foldkit/layout/label_audit.hpp"
@@ -197,8 +198,32 @@ void check_options(const LayoutOptions& options);
 /// glue tab with these options (a narrow slit, tabs.hpp): a partition should put them in two parts.
 double narrow_slit_gap_mm(const LayoutOptions& options);
 
-/// Scales, places and draws every piece. Throws LayoutError when the options are unusable or a piece
-/// cannot fit a sheet at the asked size (the message names the largest --size that fits).
+/// A piece fits no sheet at the asked model size. Carries the numbers, so that the caller can word the
+/// size as its user sets it (the CLI: --size).
+class PieceTooLarge : public LayoutError {
+ public:
+  PieceTooLarge(int piece, Vec2 area_mm, double asked_mm, double largest_mm)
+      : LayoutError(message(piece, area_mm, asked_mm, largest_mm, "size")),
+        piece_(piece),
+        area_mm_(area_mm),
+        asked_mm_(asked_mm),
+        largest_mm_(largest_mm) {}
+  /// The message with the model size called `size_name`.
+  std::string message(const std::string& size_name) const {
+    return message(piece_, area_mm_, asked_mm_, largest_mm_, size_name);
+  }
+  double largest_mm() const { return largest_mm_; }
+
+ private:
+  static std::string message(int piece, Vec2 area_mm, double asked_mm, double largest_mm,
+                             const std::string& size_name);
+  int piece_;
+  Vec2 area_mm_;
+  double asked_mm_, largest_mm_;
+};
+
+/// Scales, places and draws every piece. Throws LayoutError when the options are unusable, PieceTooLarge
+/// when a piece cannot fit a sheet at the asked size (naming the largest size that fits).
 LayoutResult layout_sheets(const unfold::Unfolding& unfolding, const LayoutOptions& options);
 
 /// A layout that may stop once packed: `layout` is empty when the packing took more than the sheets
