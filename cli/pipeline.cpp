@@ -112,6 +112,7 @@ void try_other_unfoldings(UnfoldRun& run, const layout::LayoutOptions& o, const 
     };
   for (const OtherUnfolding& other : kOtherUnfoldings) {
     const layout::LayoutResult& held = *parts.layout;
+    if (flaws(held) > kOnlyTheSizeMendsShare * held.label_audit.labels) return;
     if (flaws(held) <= static_cast<int>(other.flaw_share * held.label_audit.labels)) continue;
     if (o.deadline && std::chrono::steady_clock::now() > *o.deadline) return;
     const unfold::UnfoldOptions options = other_unfolding(asked, other, o);

@@ -111,3 +111,33 @@ TEST(Pipeline, PartsCloseUpOnlyWhereNoColourBleedsIntoTheGap) {
   EXPECT_EQ(cli::bleed_room(closer, white, fills).closer_spacing_mm, cli::kCloserSpacing_mm);
   EXPECT_FALSE(cli::bleed_room({}, textured, fills).closer_spacing_mm.has_value());
 }
+
+namespace {
+
+// Whether choosing the parts of `name` at `size_mm` unfolds it another way (its progress says so).
+bool tries_another_unfolding(const std::string& name, double size_mm) {
+  layout::LayoutOptions o = at_150_mm();
+  o.size_mm = size_mm;
+  bool another = false;
+  o.progress = [&another](const layout::LayoutProgress& p) {
+    another = another || p.stage.rfind("another unfolding", 0) == 0;
+  };
+  cli::UnfoldRun run = unfolded_for_print(name, o);
+  const layout::LayoutResult first = first_choice(run, o);
+  EXPECT_GT(cli::flaws(first), cli::kFewFlawsShare * first.label_audit.labels) << name << " has flaws";
+  cli::choose_and_note_parts(run, o);
+  return another;
+}
+
+}  // namespace
+
+TEST(Pipeline, WhereOnlyTheSizeCanMendTheLabelsNoOtherUnfoldingIsTried) {
+  // spot_128 at 30 mm: faces of a few millimetres, most labels unclear whatever the seams.
+  layout::LayoutOptions o = at_150_mm();
+  o.size_mm = 30;
+  const layout::LayoutResult first = first_choice(unfolded_for_print("spot_128.obj", o), o);
+  ASSERT_GT(cli::flaws(first), cli::kOnlyTheSizeMendsShare * first.label_audit.labels);
+  EXPECT_FALSE(tries_another_unfolding("spot_128.obj", 30));
+  // fish_350 at 110 mm, a few labels unclear: the other unfoldings are tried.
+  EXPECT_TRUE(tries_another_unfolding("fish_350.obj", 110));
+}
