@@ -25,8 +25,8 @@ inline constexpr double kFewFlawsShare = 0.005;
 /// Past this share of its labels in flaws, a layout's faces are too small for numbers at its size and
 /// only the size mends them (the remedy note says which): choose_and_note_parts unfolds no other way.
 /// Over `bench --layout` the other unfoldings took the worst share they met, 41% (212 of 518), to 34%;
-/// cat_500 at 60 mm on 105x148 mm paper (flaws 1.7 times its labels) spent 48 of its 56 s on them and
-/// printed 21 parts where its own unfolding gives 7 (session 47).
+/// cat_500 at 60 mm on 105x148 mm paper (flaws 1.6 times its labels) spent 48 of its 56 s on them and
+/// printed 21 parts with 12 seams without a tab where its own unfolding gives 7 with 27 (session 47).
 inline constexpr double kOnlyTheSizeMendsShare = 0.5;
 
 /// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
