@@ -32,12 +32,11 @@ inline constexpr double kOnlyTheSizeMendsShare = 0.5;
 /// Replaces result.unfolding by the parts a layout with `layout_options` needs (choose_parts.hpp), noting
 /// any split in result.notes. What `make` lays out and `unfold --size` writes. Where those parts have
 /// more flaws than kFewFlawsShare allows, and no more than kOnlyTheSizeMendsShare (meshes up to 500
-/// faces at a fixed size), the mesh is unfolded
-/// again with seams where labels have room (SeamPreference::Balanced) and that choice is kept when it
-/// takes fewer sheets, or as many with fewer labels unclear and seams without a tab in all: run.result
-/// and run.options are then the second unfolding's. Returns the layout of those parts when the choice
-/// made one.
-/// `choose` says what the choice may do beyond picking parts (ChooseOptions; give it bleed_room first).
+/// faces at a fixed size), the mesh is unfolded again with seams where labels have room
+/// (SeamPreference::Balanced) and that choice is kept when it takes fewer sheets, or as many with fewer
+/// labels unclear and seams without a tab in all: run.result and run.options are then the second unfolding's.
+/// Returns the layout of those parts when the choice made one. `choose` says what the choice may do beyond
+/// picking parts (ChooseOptions; give it bleed_room first).
 std::optional<layout::LayoutResult> choose_and_note_parts(UnfoldRun& run,
                                                           const layout::LayoutOptions& layout_options,
                                                           const ChooseOptions& choose = {});
